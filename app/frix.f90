@@ -1,0 +1,90 @@
+!> frix: runs a CARAT-style input deck.
+!>   frix DECK [--out DIR] [--check] [--quiet]
+!> Exit status 0 on success, 1 on a deck error or a failed analysis, 2 on a usage error.
+!> This is the only place where errors are printed.
+program frix
+   use frix_error, only: error_t
+   use frix_driver, only: run_options_t, run_deck
+   implicit none
+   type(run_options_t) :: options
+   type(error_t), allocatable :: error
+   integer :: status
+
+   call parse_command_line(options, status)
+   if (status /= 0) then
+      call print_usage()
+      if (status == 1) stop
+      error stop 2
+   end if
+   call run_deck(options, error)
+   if (allocated(error)) then
+      write (0, '(a)') error%message
+      error stop 1
+   end if
+
+contains
+
+   subroutine parse_command_line(options, status)
+      type(run_options_t), intent(out) :: options
+      integer, intent(out) :: status  !! 0 ok, 1 help asked, 2 usage error
+      character(len=:), allocatable :: argument
+      integer :: i, n
+      status = 0
+      n = command_argument_count()
+      i = 0
+      do while (i < n)
+         i = i + 1
+         argument = get_argument(i)
+         select case (argument)
+         case ('-h', '--help')
+            status = 1
+            return
+         case ('--check')
+            options%check_only = .true.
+         case ('--quiet')
+            options%quiet = .true.
+         case ('--out')
+            if (i == n) then
+               write (0, '(a)') 'frix: --out needs a directory'
+               status = 2
+               return
+            end if
+            i = i + 1
+            options%output_directory = get_argument(i)
+         case default
+            if (argument(1:1) == '-') then
+               write (0, '(a)') 'frix: unknown option "'//argument//'"'
+               status = 2
+               return
+            end if
+            if (allocated(options%deck_path)) then
+               write (0, '(a)') 'frix: more than one deck given: "'//argument//'"'
+               status = 2
+               return
+            end if
+            options%deck_path = argument
+         end select
+      end do
+      if (.not. allocated(options%deck_path)) then
+         write (0, '(a)') 'frix: no deck given'
+         status = 2
+      end if
+   end subroutine parse_command_line
+
+   function get_argument(i) result(argument)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: argument
+      integer :: length
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: argument)
+      if (length > 0) call get_command_argument(i, argument)
+   end function get_argument
+
+   subroutine print_usage()
+      write (*, '(a)') 'usage: frix DECK [--out DIR] [--check] [--quiet]'
+      write (*, '(a)') '  DECK       input deck (CARAT-style sections, see docs/deck-format.md)'
+      write (*, '(a)') '  --out DIR  write results into DIR (default: beside the deck)'
+      write (*, '(a)') '  --check    read and validate the deck, solve nothing'
+      write (*, '(a)') '  --quiet    no progress lines'
+   end subroutine print_usage
+end program frix

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs what frix needs from Debian's packages (if missing) and builds it with CMake.
+#   scripts/setup.sh [BUILD_DIR]      (default: build)
+# Used by both README commands and by CI. Safe to run again: it only installs what is missing
+# and rebuilds incrementally.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_dir=${1:-$root/build}
+
+packages=(gfortran gcc cmake make libsuitesparse-dev libmetis-dev libhdf5-dev gmsh numdiff
+          libopenblas0-pthread python3-numpy python3-matplotlib python3-meshio python3-h5py)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  install() {
+    "${sudo_cmd[@]}" apt-get update -q &&
+    DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+  }
+  # apt can fail once when another apt run cleans its cache at the wrong moment: retry once.
+  if ! install; then
+    echo "setup: apt-get failed, retrying once in 10 s"
+    sleep 10
+    install
+  fi
+fi
+
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > "$build_dir.configure.log" 2>&1 ||
+  { cat "$build_dir.configure.log"; exit 1; }
+cmake --build "$build_dir" -j"$(nproc)"

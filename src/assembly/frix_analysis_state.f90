@@ -1,0 +1,66 @@
+!> The solution state of an analysis: displacements and the per-element internal variables,
+!> both at the last converged increment ("committed") and at the current iterate.
+module frix_analysis_state
+   use frix_kinds, only: dp
+   use frix_model, only: model_t
+   implicit none
+   private
+
+   public :: analysis_state_t, create_analysis_state, commit_state, restore_state
+
+   type :: analysis_state_t
+      real(dp) :: time = 0.0_dp               !! pseudo time (load factor) of `u`
+      real(dp) :: committed_time = 0.0_dp
+      real(dp), allocatable :: u(:)           !! (3*n_nodes) current total displacements, node-major
+      real(dp), allocatable :: committed_u(:)
+      real(dp), allocatable :: alpha(:, :)    !! (max EAS parameters, n_elements) current iterate
+      real(dp), allocatable :: committed_alpha(:, :)
+      real(dp), allocatable :: history(:, :, :)           !! (max n_state, n_points, n_elements) current
+      real(dp), allocatable :: committed_history(:, :, :) !! at the last converged increment
+   end type analysis_state_t
+
+contains
+
+   !> Zero state sized for `model`.
+   subroutine create_analysis_state(model, state)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(out) :: state
+      integer :: b, max_enhanced, max_state, max_points, n_equations
+      max_enhanced = 0
+      max_state = 0
+      max_points = 0
+      do b = 1, size(model%blocks)
+         associate (element => model%blocks(b)%element%formulation, &
+                    material => model%materials(model%blocks(b)%material)%law)
+            max_enhanced = max(max_enhanced, element%n_enhanced())
+            max_points = max(max_points, element%n_points())
+            max_state = max(max_state, material%n_state())
+         end associate
+      end do
+      n_equations = 3*model%mesh%n_nodes
+      allocate (state%u(n_equations), source=0.0_dp)
+      allocate (state%alpha(max_enhanced, model%mesh%n_elements), source=0.0_dp)
+      allocate (state%history(max_state, max_points, model%mesh%n_elements), source=0.0_dp)
+      state%committed_u = state%u
+      state%committed_alpha = state%alpha
+      state%committed_history = state%history
+   end subroutine create_analysis_state
+
+   !> Accept the current iterate as converged.
+   subroutine commit_state(state)
+      type(analysis_state_t), intent(inout) :: state
+      state%committed_time = state%time
+      state%committed_u = state%u
+      state%committed_alpha = state%alpha
+      state%committed_history = state%history
+   end subroutine commit_state
+
+   !> Go back to the last converged increment (after a failed increment).
+   subroutine restore_state(state)
+      type(analysis_state_t), intent(inout) :: state
+      state%time = state%committed_time
+      state%u = state%committed_u
+      state%alpha = state%committed_alpha
+      state%history = state%committed_history
+   end subroutine restore_state
+end module frix_analysis_state

@@ -1,0 +1,94 @@
+!> Global assembly of internal forces and tangent stiffness: one loop over the elements,
+!> dispatching once per element to its block's formulation and scattering into the
+!> node-blocked sparse matrix.
+module frix_assembler
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_model, only: model_t
+   use frix_analysis_state, only: analysis_state_t
+   use frix_sparse_matrix, only: sparse_matrix_t
+   implicit none
+   private
+
+   public :: assemble_internal, max_nodes_per_element
+
+   integer, parameter :: max_nodes_per_element = 8
+
+contains
+
+   !> fint(u) of the whole mesh at state%u, and if `matrix` is present the tangent
+   !> d fint / d u (the matrix is zeroed first). Updates state%alpha (EAS parameters solved
+   !> at this u) and state%history (material history at this u, from the committed one).
+   !> With `gp_stress`/`gp_strain` present, the Cauchy stress and the strain at every
+   !> integration point are returned too, (6, n_points, n_elements).
+   subroutine assemble_internal(model, state, fint, error, matrix, gp_stress, gp_strain)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(out) :: fint(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(sparse_matrix_t), intent(inout), optional :: matrix
+      real(dp), intent(out), optional :: gp_stress(:, :, :)
+      real(dp), intent(out), optional :: gp_strain(:, :, :)
+
+      real(dp) :: coords(3, max_nodes_per_element), displacement(3, max_nodes_per_element)
+      real(dp) :: element_force(3*max_nodes_per_element)
+      real(dp) :: element_tangent(3*max_nodes_per_element, 3*max_nodes_per_element)
+      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block
+      type(error_t), allocatable :: element_error
+
+      fint = 0.0_dp
+      if (present(matrix)) call matrix%zero()
+      do e = 1, model%mesh%n_elements
+         block = model%mesh%element_block(e)
+         associate (element => model%blocks(block)%element%formulation, &
+                    material => model%materials(model%blocks(block)%material)%law, &
+                    nodes => model%mesh%connectivity(:, e))
+            n_nodes = element%n_nodes()
+            n_enhanced = element%n_enhanced()
+            n_points = element%n_points()
+            n_state = material%n_state()
+            do a = 1, n_nodes
+               node = nodes(a)
+               coords(:, a) = model%mesh%coords(:, node)
+               displacement(:, a) = state%u(3*node - 2:3*node)
+            end do
+            if (present(matrix)) then
+               call element%evaluate(material, coords(:, :n_nodes), displacement(:, :n_nodes), &
+                                     state%alpha(:n_enhanced, e), &
+                                     state%committed_history(:n_state, :n_points, e), &
+                                     state%history(:n_state, :n_points, e), &
+                                     element_force(:3*n_nodes), &
+                                     tangent=element_tangent(:3*n_nodes, :3*n_nodes), &
+                                     error=element_error)
+            else if (present(gp_stress) .and. present(gp_strain)) then
+               call element%evaluate(material, coords(:, :n_nodes), displacement(:, :n_nodes), &
+                                     state%alpha(:n_enhanced, e), &
+                                     state%committed_history(:n_state, :n_points, e), &
+                                     state%history(:n_state, :n_points, e), &
+                                     element_force(:3*n_nodes), &
+                                     stress=gp_stress(:, :n_points, e), &
+                                     strain=gp_strain(:, :n_points, e), error=element_error)
+            else
+               call element%evaluate(material, coords(:, :n_nodes), displacement(:, :n_nodes), &
+                                     state%alpha(:n_enhanced, e), &
+                                     state%committed_history(:n_state, :n_points, e), &
+                                     state%history(:n_state, :n_points, e), &
+                                     element_force(:3*n_nodes), error=element_error)
+            end if
+            if (allocated(element_error)) then
+               call fatal_error(error, 'element '//to_string(model%mesh%element_ids(e))//': '// &
+                                element_error%message)
+               return
+            end if
+            do a = 1, n_nodes
+               node = nodes(a)
+               fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + element_force(3*a - 2:3*a)
+            end do
+            if (present(matrix)) then
+               call matrix%add_element(nodes(:n_nodes), element_tangent(:3*n_nodes, :3*n_nodes))
+            end if
+         end associate
+      end do
+   end subroutine assemble_internal
+end module frix_assembler

@@ -1,0 +1,130 @@
+!> External forces at pseudo time t and the prescribed displacements.
+!> Sign convention: the residual is r = fext - fint; a follower pressure's load stiffness
+!> K_load = d fext / d u enters the Newton matrix as K = d fint/du - K_load.
+module frix_external_loads
+   use frix_kinds, only: dp
+   use frix_model, only: model_t, curve_factor
+   use frix_mesh, only: hex8_face_nodes
+   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_surface_load, only: pressure_load
+   implicit none
+   private
+
+   public :: assemble_external, prescribed_displacements, has_follower_loads
+
+contains
+
+   !> fext(t) at displacements u. With `matrix` present, the follower-load stiffness is
+   !> subtracted from it (the matrix must already hold d fint / d u).
+   subroutine assemble_external(model, time, u, fext, matrix)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: time
+      real(dp), intent(in) :: u(:)
+      real(dp), intent(out) :: fext(:)
+      type(sparse_matrix_t), intent(inout), optional :: matrix
+      integer :: i, k, a, node, e, face, equation
+      real(dp) :: factor, coords(3, 4), displacement(3, 4), force(12), stiffness(12, 12)
+      real(dp) :: weights(8), element_coords(3, 8)
+      integer :: face_nodes(4)
+
+      fext = 0.0_dp
+      if (allocated(model%nodal_forces)) then
+         do i = 1, size(model%nodal_forces)
+            associate (load => model%nodal_forces(i))
+               factor = load%value*curve_factor(model, load%curve, time)
+               do k = 1, size(load%nodes)
+                  equation = 3*(load%nodes(k) - 1) + load%component
+                  fext(equation) = fext(equation) + factor
+               end do
+            end associate
+         end do
+      end if
+
+      if (allocated(model%pressures)) then
+         do i = 1, size(model%pressures)
+            associate (load => model%pressures(i), &
+                       surface => model%mesh%surfaces(model%pressures(i)%surface))
+               factor = load%value*curve_factor(model, load%curve, time)
+               if (factor == 0.0_dp) cycle
+               do k = 1, size(surface%elements)
+                  e = surface%elements(k)
+                  face = surface%faces(k)
+                  face_nodes = model%mesh%connectivity(hex8_face_nodes(:, face), e)
+                  do a = 1, 4
+                     node = face_nodes(a)
+                     coords(:, a) = model%mesh%coords(:, node)
+                     displacement(:, a) = u(3*node - 2:3*node)
+                  end do
+                  call pressure_load(coords, displacement, factor, load%follower, force, stiffness)
+                  do a = 1, 4
+                     node = face_nodes(a)
+                     fext(3*node - 2:3*node) = fext(3*node - 2:3*node) + force(3*a - 2:3*a)
+                  end do
+                  if (load%follower .and. present(matrix)) then
+                     call matrix%add_element(face_nodes, -stiffness)
+                  end if
+               end do
+            end associate
+         end do
+      end if
+
+      if (allocated(model%body_forces)) then
+         do i = 1, size(model%body_forces)
+            associate (load => model%body_forces(i))
+               factor = curve_factor(model, load%curve, time)
+               if (factor == 0.0_dp) cycle
+               do k = 1, size(load%elements)
+                  e = load%elements(k)
+                  associate (block => model%blocks(model%mesh%element_block(e)))
+                     associate (element => block%element%formulation, &
+                                density => model%materials(block%material)%law%density)
+                        element_coords = model%mesh%coords(:, model%mesh%connectivity(:, e))
+                        call element%volume_weights(element_coords, weights)
+                        do a = 1, 8
+                           node = model%mesh%connectivity(a, e)
+                           fext(3*node - 2:3*node) = fext(3*node - 2:3*node) + &
+                                                     density*factor*weights(a)*load%gravity
+                        end do
+                     end associate
+                  end associate
+               end do
+            end associate
+         end do
+      end if
+   end subroutine assemble_external
+
+   !> Constrained equations and their prescribed values at time t. Nodes that belong to no
+   !> element have no stiffness: they are held fixed.
+   subroutine prescribed_displacements(model, time, fixed, values)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: time
+      logical, intent(out) :: fixed(:)
+      real(dp), intent(out) :: values(:)
+      logical, allocatable :: in_element(:)
+      integer :: i, k, equation, node
+      fixed = .false.
+      values = 0.0_dp
+      if (allocated(model%dirichlet)) then
+         do i = 1, size(model%dirichlet)
+            associate (condition => model%dirichlet(i))
+               do k = 1, size(condition%nodes)
+                  equation = 3*(condition%nodes(k) - 1) + condition%component
+                  fixed(equation) = .true.
+                  values(equation) = condition%value*curve_factor(model, condition%curve, time)
+               end do
+            end associate
+         end do
+      end if
+      allocate (in_element(model%mesh%n_nodes), source=.false.)
+      in_element(pack(model%mesh%connectivity, .true.)) = .true.
+      do node = 1, model%mesh%n_nodes
+         if (.not. in_element(node)) fixed(3*node - 2:3*node) = .true.
+      end do
+   end subroutine prescribed_displacements
+
+   pure logical function has_follower_loads(model)
+      type(model_t), intent(in) :: model
+      has_follower_loads = .false.
+      if (allocated(model%pressures)) has_follower_loads = any(model%pressures%follower)
+   end function has_follower_loads
+end module frix_external_loads

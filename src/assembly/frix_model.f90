@@ -1,0 +1,146 @@
+!> The analysis model as read from a deck: mesh, materials, element blocks, boundary
+!> conditions, loads, load curves, steps, solver controls and result requests.
+!>
+!> Pseudo time: step s runs from t = s-1 to t = s. Every load and prescribed displacement is
+!> `value * f(t)` where f is its load curve; without a curve f is the default ramp
+!> f(t) = min(t, 1) (applied in the first step, held afterwards). The load factor printed by
+!> the driver is t.
+module frix_model
+   use frix_kinds, only: dp
+   use frix_mesh, only: mesh_t
+   use frix_material, only: material_slot_t
+   use frix_element, only: element_slot_t, kinematics_linear
+   implicit none
+   private
+
+   public :: model_t, element_block_t, dirichlet_t, nodal_force_t, pressure_load_t
+   public :: body_force_t, load_curve_t, step_t, solver_controls_t, results_request_t
+   public :: history_request_t, curve_factor
+   public :: solver_auto, solver_cholmod, solver_umfpack
+
+   integer, parameter :: solver_auto = 0     !! CHOLMOD if the tangent is symmetric, else UMFPACK
+   integer, parameter :: solver_cholmod = 1
+   integer, parameter :: solver_umfpack = 2
+
+   !> Elements sharing one formulation and one material.
+   type :: element_block_t
+      type(element_slot_t) :: element     !! formulation (shape, EAS variant, kinematics)
+      integer :: material = 0             !! index into model%materials
+   end type element_block_t
+
+   !> Prescribed displacement u_i = value * f(t) on `nodes` (value 0: fixed).
+   type :: dirichlet_t
+      integer, allocatable :: nodes(:)    !! internal node numbers
+      integer :: component = 0            !! 1 = x, 2 = y, 3 = z
+      real(dp) :: value = 0.0_dp
+      integer :: curve = 0                !! index into model%curves, 0 = default ramp
+      integer :: line = 0                 !! deck line (for messages)
+   end type dirichlet_t
+
+   !> Nodal force F_i = value * f(t) applied to each node of `nodes`.
+   type :: nodal_force_t
+      integer, allocatable :: nodes(:)
+      integer :: component = 0
+      real(dp) :: value = 0.0_dp
+      integer :: curve = 0
+   end type nodal_force_t
+
+   !> Pressure p * f(t) on a surface, positive pushing into the body (traction -p n with n the
+   !> outward normal). Dead: reference normal and area. Follower: current normal and area.
+   type :: pressure_load_t
+      integer :: surface = 0              !! index into model%mesh%surfaces
+      real(dp) :: value = 0.0_dp
+      integer :: curve = 0
+      logical :: follower = .false.
+   end type pressure_load_t
+
+   !> Body force rho g f(t) per unit reference volume on `elements` (rho from the material).
+   type :: body_force_t
+      integer, allocatable :: elements(:)
+      real(dp) :: gravity(3) = 0.0_dp     !! acceleration vector, e.g. (0, 0, -9.81)
+      integer :: curve = 0
+   end type body_force_t
+
+   !> Piecewise-linear curve f(t) through (times(k), factors(k)), constant beyond the ends.
+   type :: load_curve_t
+      integer :: id = 0
+      real(dp), allocatable :: times(:)
+      real(dp), allocatable :: factors(:)
+   end type load_curve_t
+
+   type :: step_t
+      integer :: n_increments = 1
+      integer :: max_iterations = 0       !! 0: use the solver controls' value
+      character(len=:), allocatable :: control  !! 'LOAD' or 'DISPLACEMENT' (as declared)
+   end type step_t
+
+   type :: solver_controls_t
+      integer :: max_iterations = 25
+      real(dp) :: tol_residual = 1.0e-8_dp     !! ||r|| <= tol * max(||f_ext||, ||reactions||)
+      real(dp) :: tol_displacement = 1.0e-8_dp !! ||du|| <= tol * ||u||
+      integer :: max_cutbacks = 6              !! halvings of an increment before giving up
+      integer :: linear_solver = solver_auto
+      integer :: default_kinematics = kinematics_linear
+   end type solver_controls_t
+
+   !> One column of the CSV history: displacement ('U') or reaction ('R') of a node's DOF.
+   type :: history_request_t
+      integer :: node = 0                 !! internal node number
+      integer :: component = 0
+      character(len=1) :: kind = 'U'
+   end type history_request_t
+
+   type :: results_request_t
+      logical :: vtk = .true.
+      logical :: listing = .true.
+      integer :: every = 1                !! write every n-th converged increment (and the last)
+      type(history_request_t), allocatable :: history(:)
+   end type results_request_t
+
+   type :: model_t
+      character(len=:), allocatable :: deck_path       !! as given on the command line
+      character(len=:), allocatable :: title           !! the deck's header comment lines
+      type(mesh_t) :: mesh
+      type(material_slot_t), allocatable :: materials(:)
+      integer, allocatable :: material_ids(:)          !! user ids of `materials`
+      type(element_block_t), allocatable :: blocks(:)
+      type(dirichlet_t), allocatable :: dirichlet(:)
+      type(nodal_force_t), allocatable :: nodal_forces(:)
+      type(pressure_load_t), allocatable :: pressures(:)
+      type(body_force_t), allocatable :: body_forces(:)
+      type(load_curve_t), allocatable :: curves(:)
+      type(step_t), allocatable :: steps(:)
+      type(solver_controls_t) :: controls
+      type(results_request_t) :: results
+   end type model_t
+
+contains
+
+   !> f(t) of curve `curve` (0: default ramp min(t, 1)).
+   pure function curve_factor(model, curve, time) result(factor)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: curve
+      real(dp), intent(in) :: time
+      real(dp) :: factor
+      integer :: k, n
+      real(dp) :: weight
+      if (curve == 0) then
+         factor = min(max(time, 0.0_dp), 1.0_dp)
+         return
+      end if
+      associate (times => model%curves(curve)%times, factors => model%curves(curve)%factors)
+         n = size(times)
+         if (time <= times(1)) then
+            factor = factors(1)
+         else if (time >= times(n)) then
+            factor = factors(n)
+         else
+            do k = 2, n
+               if (time <= times(k)) exit
+            end do
+            weight = (time - times(k - 1))/(times(k) - times(k - 1))
+            factor = (1.0_dp - weight)*factors(k - 1) + weight*factors(k)
+         end if
+      end associate
+   end function curve_factor
+end module frix_model

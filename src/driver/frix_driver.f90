@@ -1,0 +1,157 @@
+!> Top level of a run: read the deck, set up the analysis, march through the steps with
+!> automatic cut-back, and write the results of every converged increment.
+!>
+!> Increment control: step s runs from t = s-1 to t = s in NUMSTEP equal increments. An
+!> increment that fails (no convergence within MAXITER, diverging residual, an element
+!> turned inside out) is retried with half the size, at most MAXCUT times in a row. After a
+!> cut, the size grows back by a factor 1.5 (never beyond the nominal one) after every
+!> increment that converged in at most a third of MAXITER iterations. When an increment fails
+!> MAXCUT times, the run stops with a message and a non-zero exit; the results of every
+!> converged increment are already on disk.
+module frix_driver
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_model, only: model_t
+   use frix_deck_reader, only: read_deck
+   use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
+                                  restore_state
+   use frix_newton_solver, only: newton_context_t, newton_report_t, setup_newton, solve_increment
+   use frix_results_output, only: results_output_t
+   implicit none
+   private
+
+   public :: run_options_t, run_deck
+
+   type :: run_options_t
+      character(len=:), allocatable :: deck_path
+      character(len=:), allocatable :: output_directory  !! default: the deck's directory
+      logical :: check_only = .false.
+      logical :: quiet = .false.
+   end type run_options_t
+
+   real(dp), parameter :: growth_factor = 1.5_dp
+
+contains
+
+   subroutine run_deck(options, error)
+      type(run_options_t), intent(in) :: options
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(analysis_state_t) :: state
+      type(newton_context_t) :: context
+      type(results_output_t) :: output
+      integer :: step
+
+      call read_deck(options%deck_path, model, error)
+      if (allocated(error)) return
+      if (options%check_only) then
+         if (.not. options%quiet) write (*, '(a)') 'frix: '//options%deck_path//': deck is valid'
+         return
+      end if
+
+      call create_analysis_state(model, state)
+      call setup_newton(model, context, error)
+      if (allocated(error)) return
+      context%quiet = options%quiet
+      call output%open(model, results_base(options), error)
+      if (allocated(error)) return
+      if (.not. options%quiet) call print_banner(model, context)
+
+      do step = 1, size(model%steps)
+         call run_step(model, step, context, state, output, options%quiet, error)
+         if (allocated(error)) exit
+      end do
+      call output%close(error)
+      if (.not. options%quiet) then
+         write (*, '(a)') 'frix: '//to_string(output%n_increments)// &
+            ' converged increments; results in '//results_base(options)//'*'
+         write (*, '(a,3(f0.3,a))') 'frix: linear solver '//context%solver%name()//': analyse ', &
+            context%solver%analyse_seconds, ' s, factorize ', context%solver%factorize_seconds, &
+            ' s, solve ', context%solver%solve_seconds, ' s'
+      end if
+   end subroutine run_deck
+
+   !> March through step `step`, cutting back failed increments.
+   subroutine run_step(model, step, context, state, output, quiet, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      type(results_output_t), intent(inout) :: output
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      type(newton_report_t) :: report
+      real(dp) :: step_end, nominal, size_now, target_time
+      integer :: increment, cutbacks, max_iterations
+      character(len=64) :: label
+
+      step_end = real(step, dp)
+      nominal = 1.0_dp/model%steps(step)%n_increments
+      max_iterations = model%steps(step)%max_iterations
+      if (max_iterations <= 0) max_iterations = model%controls%max_iterations
+      size_now = nominal
+      increment = 0
+      cutbacks = 0
+      do while (state%committed_time < step_end - 1.0e-12_dp)
+         target_time = min(state%committed_time + size_now, step_end)
+         if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
+         write (label, '("step",i3,"  incr",i4)') step, increment + 1
+         call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
+                              report, error)
+         if (allocated(error)) return
+         if (report%converged) then
+            increment = increment + 1
+            call commit_state(state)
+            call output%write_increment(model, step, increment, state, context, report, error)
+            if (allocated(error)) return
+            cutbacks = 0
+            if (size_now < nominal .and. report%iterations <= max_iterations/3) &
+               size_now = min(nominal, growth_factor*size_now)
+         else
+            call restore_state(state)
+            cutbacks = cutbacks + 1
+            if (cutbacks > model%controls%max_cutbacks) then
+               call fatal_error(error, 'frix: step '//to_string(step)//': the increment from t = '// &
+                                to_string(state%committed_time)//' to t = '//to_string(target_time)// &
+                                ' failed ('//report%failure//') after '// &
+                                to_string(model%controls%max_cutbacks)//' cut-backs; the results of the '// &
+                                to_string(output%n_increments)//' converged increments up to t = '// &
+                                to_string(state%committed_time)//' are written')
+               return
+            end if
+            size_now = 0.5_dp*size_now
+            if (.not. quiet) write (*, '(2x,a)') 'cut-back: '//report%failure//'; new increment size '// &
+               to_string(size_now)
+         end if
+      end do
+   end subroutine run_step
+
+   !> Path prefix of every result file: <output directory>/<deck name without extension>.
+   function results_base(options) result(base)
+      type(run_options_t), intent(in) :: options
+      character(len=:), allocatable :: base
+      character(len=:), allocatable :: directory, name
+      integer :: slash, dot
+      slash = index(options%deck_path, '/', back=.true.)
+      name = options%deck_path(slash + 1:)
+      dot = index(name, '.', back=.true.)
+      if (dot > 1) name = name(:dot - 1)
+      if (allocated(options%output_directory)) then
+         directory = options%output_directory
+      else if (slash > 0) then
+         directory = options%deck_path(:slash - 1)
+      else
+         directory = '.'
+      end if
+      base = directory//'/'//name
+   end function results_base
+
+   subroutine print_banner(model, context)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(in) :: context
+      write (*, '(a)') 'frix: '//model%deck_path//': '//to_string(model%mesh%n_nodes)//' nodes, '// &
+         to_string(model%mesh%n_elements)//' elements, '//to_string(3*model%mesh%n_nodes)// &
+         ' equations, '//to_string(size(model%steps))//' steps; linear solver '//context%solver%name()
+   end subroutine print_banner
+end module frix_driver

@@ -1,0 +1,226 @@
+!> Newton-Raphson solution of one load increment.
+!>
+!> Residual r = fext - fint on the free equations; reactions R = fint - fext on the constrained
+!> ones. An iterate is converged when
+!>   ||r|| <= TOLRESID * max(||fext||, ||R||)              (residual criterion), and
+!>   ||du|| <= TOLDISP * ||u||  for the last correction du   (displacement criterion);
+!> an iterate whose residual is already below 1e-4 TOLRESID times the reference is accepted
+!> without the displacement criterion (the response was linear, as in Abaqus' "zero residual"
+!> rule). The energy norm printed per iteration is |du . r| of the correction just made.
+module frix_newton_solver
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_model, only: model_t, solver_auto, solver_cholmod, solver_umfpack
+   use frix_analysis_state, only: analysis_state_t
+   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_linear_solver, only: linear_solver_t
+   use frix_linear_solver_registry, only: create_linear_solver
+   use frix_assembler, only: assemble_internal
+   use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
+   implicit none
+   private
+
+   public :: newton_context_t, newton_report_t, setup_newton, solve_increment
+
+   !> Everything the iterations need that outlives one increment.
+   type :: newton_context_t
+      type(sparse_matrix_t) :: matrix
+      class(linear_solver_t), allocatable :: solver
+      logical :: symmetric = .true.        !! tangent expected symmetric (no follower loads)
+      logical, allocatable :: fixed(:)     !! constrained equations
+      real(dp), allocatable :: prescribed(:)
+      real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
+      real(dp), allocatable :: reactions(:) !! fint - fext on constrained equations, 0 elsewhere
+      logical :: quiet = .false.
+   end type newton_context_t
+
+   !> What happened in one increment.
+   type :: newton_report_t
+      logical :: converged = .false.
+      integer :: iterations = 0
+      real(dp) :: residual_norms(0:200) = 0.0_dp   !! ||r|| after each iteration (0: before the first solve)
+      real(dp) :: relative_norms(0:200) = 0.0_dp   !! ||r|| / reference
+      real(dp) :: energy_norms(0:200) = 0.0_dp     !! |du . r| of the correction leading there
+      character(len=:), allocatable :: failure     !! why it did not converge
+   end type newton_report_t
+
+   real(dp), parameter :: zero_residual_fraction = 1.0e-4_dp
+   real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
+
+contains
+
+   !> Sparse pattern from the connectivity, the linear solver and work arrays.
+   subroutine setup_newton(model, context, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(out) :: context
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n
+      n = 3*model%mesh%n_nodes
+      call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
+      if (allocated(error)) return
+      context%symmetric = .not. has_follower_loads(model)
+      select case (model%controls%linear_solver)
+      case (solver_cholmod)
+         call create_linear_solver('CHOLMOD', context%solver, error)
+      case (solver_umfpack)
+         call create_linear_solver('UMFPACK', context%solver, error)
+      case default
+         if (context%symmetric) then
+            call create_linear_solver('CHOLMOD', context%solver, error)
+         else
+            call create_linear_solver('UMFPACK', context%solver, error)
+         end if
+      end select
+      if (allocated(error)) return
+      allocate (context%fixed(n), context%prescribed(n))
+      allocate (context%fint(n), context%fext(n), context%residual(n), context%correction(n), &
+                context%reactions(n), source=0.0_dp)
+   end subroutine setup_newton
+
+   !> Iterate from the committed state to equilibrium at pseudo time `time`. On return
+   !> state holds the last iterate (converged or not); the caller commits or restores.
+   !> `error` is set only for failures that a smaller increment cannot cure (a singular
+   !> matrix at the first iteration, a solver failure); non-convergence is reported in
+   !> `report` instead.
+   subroutine solve_increment(model, context, state, time, max_iterations, label, report, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      integer, intent(in) :: max_iterations
+      character(len=*), intent(in) :: label   !! "step s incr k" for the progress lines
+      type(newton_report_t), intent(out) :: report
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: inner_error
+      integer :: iteration
+      real(dp) :: residual_norm, reference, correction_norm, u_norm, energy
+      real(dp) :: diagonal_scale
+
+      state%time = time
+      call prescribed_displacements(model, time, context%fixed, context%prescribed)
+      where (context%fixed) state%u = context%prescribed
+      correction_norm = huge(1.0_dp)
+      energy = 0.0_dp
+
+      do iteration = 0, min(max_iterations, ubound(report%residual_norms, 1))
+         call assemble_internal(model, state, context%fint, inner_error, matrix=context%matrix)
+         if (allocated(inner_error)) then
+            report%failure = inner_error%message
+            return
+         end if
+         call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
+         context%residual = context%fext - context%fint
+         where (context%fixed)
+            context%reactions = -context%residual
+            context%residual = 0.0_dp
+         elsewhere
+            context%reactions = 0.0_dp
+         end where
+         residual_norm = norm2(context%residual)
+         reference = max(norm2(merge(context%fext, 0.0_dp, .not. context%fixed)), &
+                         norm2(context%reactions))
+         if (reference == 0.0_dp) reference = 1.0_dp
+         report%iterations = iteration
+         report%residual_norms(iteration) = residual_norm
+         report%relative_norms(iteration) = residual_norm/reference
+         report%energy_norms(iteration) = energy
+         if (.not. context%quiet) call print_progress(label, time, iteration, residual_norm, &
+                                                      residual_norm/reference, energy)
+
+         if (residual_norm /= residual_norm) then
+            report%failure = 'the residual is not a number'
+            return
+         end if
+         u_norm = norm2(state%u)
+         if (residual_norm <= model%controls%tol_residual*reference) then
+            if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
+                correction_norm <= model%controls%tol_displacement*u_norm) then
+               report%converged = .true.
+               return
+            end if
+         end if
+         if (iteration >= max_iterations) then
+            report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'
+            return
+         end if
+         if (iteration > 0 .and. residual_norm > divergence_factor*report%residual_norms(0) .and. &
+             report%residual_norms(0) > 0.0_dp) then
+            report%failure = 'the iterations diverge'
+            return
+         end if
+
+         diagonal_scale = mean_absolute_diagonal(context%matrix)
+         call context%matrix%apply_dirichlet(context%fixed, diagonal_scale)
+         call factorize_and_solve(context, inner_error)
+         if (allocated(inner_error)) then
+            if (iteration == 0) then
+               call move_alloc(inner_error, error)
+            else
+               report%failure = inner_error%message
+            end if
+            return
+         end if
+         where (context%fixed) context%correction = 0.0_dp
+         energy = abs(dot_product(context%correction, context%residual))
+         correction_norm = norm2(context%correction)
+         state%u = state%u + context%correction
+      end do
+   end subroutine solve_increment
+
+   !> Factorize and solve K du = r. A CHOLMOD failure (matrix not positive definite, as
+   !> past a limit point) is retried once with UMFPACK, which is then kept.
+   subroutine factorize_and_solve(context, error)
+      type(newton_context_t), intent(inout) :: context
+      type(error_t), allocatable, intent(out) :: error
+      call context%solver%factorize(context%matrix, error)
+      if (allocated(error) .and. context%solver%name() == 'CHOLMOD') then
+         deallocate (error)
+         call context%solver%release()
+         deallocate (context%solver)
+         call create_linear_solver('UMFPACK', context%solver, error)
+         if (allocated(error)) return
+         call context%solver%factorize(context%matrix, error)
+      end if
+      if (allocated(error)) then
+         call describe_singularity(context, error)
+         return
+      end if
+      call context%solver%solve(context%matrix, context%residual, context%correction, error)
+   end subroutine factorize_and_solve
+
+   !> Name the node and direction where the factorization broke down.
+   subroutine describe_singularity(context, error)
+      type(newton_context_t), intent(in) :: context
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: equation
+      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
+      equation = context%solver%failed_equation
+      if (equation <= 0) return
+      error%message = error%message//new_line('a')// &
+                      '  the stiffness matrix is singular at internal node '// &
+                      to_string((equation - 1)/3 + 1)//', direction '// &
+                      direction(mod(equation - 1, 3) + 1)// &
+                      ': is that part of the model held against rigid-body motion?'
+   end subroutine describe_singularity
+
+   !> Mean |K_ii|, the value put on the diagonal of constrained equations.
+   function mean_absolute_diagonal(matrix) result(scale)
+      type(sparse_matrix_t), intent(in) :: matrix
+      real(dp) :: scale
+      real(dp), allocatable :: diagonal(:)
+      allocate (diagonal(matrix%n))
+      call matrix%get_diagonal(diagonal)
+      scale = sum(abs(diagonal))/max(1, matrix%n)
+      if (scale == 0.0_dp) scale = 1.0_dp
+   end function mean_absolute_diagonal
+
+   subroutine print_progress(label, time, iteration, residual_norm, relative_norm, energy)
+      character(len=*), intent(in) :: label
+      real(dp), intent(in) :: time, residual_norm, relative_norm, energy
+      integer, intent(in) :: iteration
+      write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",es10.3,"  |r|/ref=",es10.3,'// &
+             '"  energy=",es10.3)') label, time, iteration, residual_norm, relative_norm, energy
+      flush (6)
+   end subroutine print_progress
+end module frix_newton_solver

@@ -1,0 +1,132 @@
+!> The result files of a run, written after every converged increment (so a run that stops
+!> keeps everything converged): the fixed-column listing `<base>_listing.txt`, the ParaView
+!> series `<base>.pvd` + `<base>_<step>_<increment>.vtu`, and the CSV history
+!> `<base>_history.csv` of the requested node DOFs. See docs/output.md.
+module frix_results_output
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_model, only: model_t
+   use frix_analysis_state, only: analysis_state_t
+   use frix_newton_solver, only: newton_context_t, newton_report_t
+   use frix_assembler, only: assemble_internal
+   use frix_listing_writer, only: listing_t
+   use frix_vtk_writer, only: vtk_series_t
+   use frix_history_writer, only: history_t
+   implicit none
+   private
+
+   public :: results_output_t, frix_version
+
+   character(len=*), parameter :: frix_version = '0.1.0'
+
+   type :: results_output_t
+      integer :: n_increments = 0        !! converged increments so far
+      type(listing_t) :: listing
+      type(vtk_series_t) :: vtk
+      type(history_t) :: history
+      logical :: has_history = .false.
+   contains
+      procedure :: open => output_open
+      procedure :: write_increment => output_write_increment
+      procedure :: close => output_close
+   end type results_output_t
+
+contains
+
+   subroutine output_open(self, model, base, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: base   !! path prefix of every result file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: slash, status, i
+      slash = index(base, '/', back=.true.)
+      if (slash > 1) then
+         call execute_command_line('mkdir -p "'//base(:slash - 1)//'"', exitstat=status)
+         if (status /= 0) then
+            call fatal_error(error, 'frix: cannot create the output directory "'//base(:slash - 1)//'"')
+            return
+         end if
+      end if
+      if (model%results%listing) then
+         call self%listing%open(base//'_listing.txt', model%deck_path, frix_version, error)
+         if (allocated(error)) return
+      end if
+      if (model%results%vtk) then
+         call self%vtk%open(base, error)
+         if (allocated(error)) return
+      end if
+      if (allocated(model%results%history)) then
+         if (size(model%results%history) > 0) then
+            associate (requests => model%results%history)
+               call self%history%open(base, model%mesh, model%mesh%node_ids(requests%node), &
+                                      [(requests(i)%component + merge(3, 0, requests(i)%kind == 'R'), &
+                                        i=1, size(requests))], error)
+            end associate
+            if (allocated(error)) return
+            self%has_history = .true.
+         end if
+      end if
+   end subroutine output_open
+
+   !> Write one converged increment. Stresses are recovered by one more element pass at the
+   !> converged displacements.
+   subroutine output_write_increment(self, model, step, increment, state, context, report, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step, increment
+      type(analysis_state_t), intent(inout) :: state
+      type(newton_context_t), intent(in) :: context
+      type(newton_report_t), intent(in) :: report
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: gp_stress(:, :, :), gp_strain(:, :, :), fint(:)
+      real(dp), allocatable :: displacement(:, :), reaction(:, :), norms(:, :)
+      logical :: last_of_step, wanted
+      integer :: n_nodes
+
+      self%n_increments = self%n_increments + 1
+      n_nodes = model%mesh%n_nodes
+      displacement = reshape(state%u, [3, n_nodes])
+      reaction = reshape(context%reactions, [3, n_nodes])
+
+      if (self%has_history) then
+         call self%history%append(step, increment, state%time, displacement, reaction, error)
+         if (allocated(error)) return
+      end if
+      last_of_step = abs(state%time - real(step, dp)) < 1.0e-12_dp
+      wanted = mod(increment, max(1, model%results%every)) == 0 .or. last_of_step
+      if (.not. wanted) return
+
+      if (self%listing%is_open()) then
+         call self%listing%write_increment_header(step, increment, state%time, report%iterations, error)
+         if (allocated(error)) return
+         norms = reshape([report%residual_norms(0:report%iterations), &
+                          report%relative_norms(0:report%iterations), &
+                          report%energy_norms(0:report%iterations)], [report%iterations + 1, 3])
+         call self%listing%write_iteration_log([character(len=17) :: 'RESIDUAL_NORM', 'RELATIVE_NORM', &
+                                                'ENERGY_NORM'], transpose(norms), error)
+         if (allocated(error)) return
+         call self%listing%write_displacements(model%mesh, displacement, error)
+         if (allocated(error)) return
+         call self%listing%write_reactions(model%mesh, reaction, reshape(context%fixed, [3, n_nodes]), error)
+         if (allocated(error)) return
+      end if
+
+      if (model%results%vtk) then
+         allocate (gp_stress(6, 8, model%mesh%n_elements), gp_strain(6, 8, model%mesh%n_elements))
+         allocate (fint(3*n_nodes))
+         call assemble_internal(model, state, fint, error, gp_stress=gp_stress, gp_strain=gp_strain)
+         if (allocated(error)) return
+         call self%vtk%write_increment(model%mesh, step, increment, state%time, displacement, &
+                                       reaction, gp_stress, gp_strain, error)
+      end if
+   end subroutine output_write_increment
+
+   subroutine output_close(self, error)
+      class(results_output_t), intent(inout) :: self
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: close_error
+      if (self%listing%is_open()) call self%listing%close(close_error)
+      if (self%has_history) call self%history%close(close_error)
+      if (allocated(close_error) .and. .not. allocated(error)) call move_alloc(close_error, error)
+   end subroutine output_close
+end module frix_results_output

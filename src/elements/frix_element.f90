@@ -1,0 +1,93 @@
+!> The element interface. An element object describes one formulation (shape, integration,
+!> enhanced strains, kinematics) and is shared by every element of a block; the per-element
+!> data (coordinates, displacements, EAS parameters, history) are passed in.
+!>
+!> Element vectors are node-major: entry 3*(a-1)+i is direction i (1=x, 2=y, 3=z) of local
+!> node a. `fint` is the internal force vector (the residual is fext - fint) and `tangent` is
+!> d fint / d u, consistent with `fint` (statically condensed for EAS).
+module frix_element
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_material, only: material_t
+   implicit none
+   private
+
+   public :: element_t, element_slot_t
+   public :: kinematics_linear, kinematics_total_lagrangian, kinematics_name
+
+   integer, parameter :: kinematics_linear = 1            !! geometrically linear (small strain)
+   integer, parameter :: kinematics_total_lagrangian = 2  !! Green-Lagrange strain, 2nd PK stress
+
+   type, abstract :: element_t
+      character(len=:), allocatable :: name        !! formulation name as printed, e.g. HEX8-EAS9
+      integer :: kinematics = kinematics_linear
+   contains
+      procedure(count_interface), deferred :: n_nodes     !! nodes per element
+      procedure(count_interface), deferred :: n_points    !! integration points per element
+      procedure(count_interface), deferred :: n_enhanced  !! EAS parameters kept per element (0 if none)
+      !> Internal force and tangent for one element.
+      procedure(evaluate_interface), deferred :: evaluate
+      !> Reference-configuration volume integral of the shape functions: nodal lumping
+      !> weights (sum of N_a over the volume), used for body forces.
+      procedure(weights_interface), deferred :: volume_weights
+   end type element_t
+
+   type :: element_slot_t
+      class(element_t), allocatable :: formulation
+   end type element_slot_t
+
+   abstract interface
+      pure function count_interface(self) result(n)
+         import :: element_t
+         class(element_t), intent(in) :: self
+         integer :: n
+      end function count_interface
+
+      !> Evaluate one element at total displacement `u`.
+      !> EAS: `alpha` enters as the last iterate of the element's enhanced parameters and leaves
+      !> solved so that the enhanced residual vanishes at this `u` (local Newton, tolerance
+      !> relative 1e-12); fint and tangent are then the statically condensed ones.
+      !> `state_old` is the material history at the start of the increment, (n_state, n_points);
+      !> `state_new` receives the history at this `u`.
+      !> `stress` receives the Cauchy stress and `strain` the small strain (linear kinematics) or
+      !> Green-Lagrange strain (total Lagrangian) at each integration point, Voigt order.
+      subroutine evaluate_interface(self, material, coords, u, alpha, state_old, state_new, &
+                                    fint, tangent, stress, strain, error)
+         import :: element_t, material_t, dp, error_t
+         class(element_t), intent(in) :: self
+         class(material_t), intent(in) :: material
+         real(dp), intent(in) :: coords(:, :)       !! (3, n_nodes) reference coordinates
+         real(dp), intent(in) :: u(:, :)            !! (3, n_nodes) total displacements
+         real(dp), intent(inout) :: alpha(:)        !! (n_enhanced) EAS parameters
+         real(dp), intent(in) :: state_old(:, :)    !! (n_state, n_points)
+         real(dp), intent(inout) :: state_new(:, :) !! (n_state, n_points)
+         real(dp), intent(out) :: fint(:)           !! (3*n_nodes)
+         real(dp), intent(out), optional :: tangent(:, :)  !! (3*n_nodes, 3*n_nodes)
+         real(dp), intent(out), optional :: stress(:, :)   !! (6, n_points) Cauchy stress
+         real(dp), intent(out), optional :: strain(:, :)   !! (6, n_points)
+         type(error_t), allocatable, intent(out) :: error  !! e.g. non-positive Jacobian
+      end subroutine evaluate_interface
+
+      pure subroutine weights_interface(self, coords, weights)
+         import :: element_t, dp
+         class(element_t), intent(in) :: self
+         real(dp), intent(in) :: coords(:, :)   !! (3, n_nodes)
+         real(dp), intent(out) :: weights(:)    !! (n_nodes): integral of N_a dV0
+      end subroutine weights_interface
+   end interface
+
+contains
+
+   pure function kinematics_name(kinematics) result(name)
+      integer, intent(in) :: kinematics
+      character(len=:), allocatable :: name
+      select case (kinematics)
+      case (kinematics_linear)
+         name = 'Geo_Lin'
+      case (kinematics_total_lagrangian)
+         name = 'Tot_Lagr'
+      case default
+         name = 'unknown'
+      end select
+   end function kinematics_name
+end module frix_element

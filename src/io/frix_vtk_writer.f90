@@ -1,0 +1,374 @@
+!> ParaView output: one VTK XML UnstructuredGrid file (`.vtu`, ASCII) per converged increment
+!> and a ParaView collection (`.pvd`) listing them with their pseudo time.
+!>
+!> Files: `<base>_<step>_<increment>.vtu` (step and increment zero-padded to 4 digits, more if
+!> needed) and `<base>.pvd`. The `.pvd` is rewritten after every increment so that a run that
+!> stops early still leaves a valid collection of the increments written so far; it names the
+!> `.vtu` files relative to its own folder. Format reference: "VTK File Formats", VTK User's
+!> Guide (Kitware), section "XML File Formats"; ParaView reads `.pvd` as a time series.
+!>
+!> Each `.vtu` holds the reference coordinates as Points, HEX8 cells (VTK_HEXAHEDRON = 12,
+!> frix_mesh node order = VTK order, 0-based connectivity) and
+!>   PointData: displacement (3), reaction (3), stress (6), strain (6), von_mises (1),
+!>              then the extra point fields added since the last increment;
+!>   CellData:  stress (6), strain (6), von_mises (1), element_id (user ids), block,
+!>              then the extra cell fields;
+!>   FieldData: TimeValue, step, increment.
+!> Tensors are written in VTK's symmetric-tensor order XX, YY, ZZ, XY, YZ, XZ (frix Voigt order
+!> is xx yy zz xy xz yz: components 5 and 6 are swapped), with tensor shears: the strain's
+!> engineering shears (gamma = 2 eps) are halved so that ParaView's eigenvalue/"von Mises"
+!> filters see the true tensor. Nodal tensors come from `frix_field_recovery`
+!> (`nodal_extrapolated` for 8-point elements, `nodal_average` otherwise); cell tensors are the
+!> point means; von_mises is computed from those recovered stresses.
+!> Numbers are written as es24.16e3 (17 significant digits: binary64 round-trips exactly).
+module frix_vtk_writer
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_mesh, only: mesh_t
+   use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises_field
+   implicit none
+   private
+
+   public :: vtk_series_t, vtk_hexahedron
+
+   integer, parameter :: vtk_hexahedron = 12   !! VTK cell type of the 8-node hexahedron
+   character(len=*), parameter :: real_edit = 'es24.16e3'   !! 17 significant digits: binary64 round-trips
+
+   !> A named field: values(n_components, n_nodes or n_elements).
+   type :: named_field_t
+      character(len=:), allocatable :: name
+      real(dp), allocatable :: values(:, :)
+   end type named_field_t
+
+   !> One written increment, as listed in the `.pvd`.
+   type :: dataset_entry_t
+      character(len=:), allocatable :: file_name   !! relative to the folder of the .pvd
+      real(dp) :: time = 0.0_dp
+   end type dataset_entry_t
+
+   !> A series of `.vtu` files and their `.pvd` collection. Usage: `call series%open(base,
+   !> error)`; per converged increment, optionally `add_point_field`/`add_cell_field`, then
+   !> `write_increment`. Extra fields are written with the next increment and then dropped.
+   type :: vtk_series_t
+      private
+      character(len=:), allocatable :: base               !! path prefix of every file
+      type(dataset_entry_t), allocatable :: datasets(:)
+      type(named_field_t), allocatable :: point_fields(:)
+      type(named_field_t), allocatable :: cell_fields(:)
+   contains
+      procedure :: open => series_open
+      procedure :: add_point_field
+      procedure :: add_cell_field
+      procedure :: write_increment
+      procedure :: n_written
+   end type vtk_series_t
+
+contains
+
+   !> Start a series whose files begin with `base` (e.g. 'results/s1'); writes an empty `.pvd`
+   !> so that a missing or read-only folder is reported at once.
+   subroutine series_open(self, base, error)
+      class(vtk_series_t), intent(inout) :: self
+      character(len=*), intent(in) :: base
+      type(error_t), allocatable, intent(out) :: error
+      self%base = base
+      allocate (self%datasets(0), self%point_fields(0), self%cell_fields(0))
+      call write_collection(self, error)
+   end subroutine series_open
+
+   !> Number of increments written so far.
+   pure integer function n_written(self)
+      class(vtk_series_t), intent(in) :: self
+      n_written = 0
+      if (allocated(self%datasets)) n_written = size(self%datasets)
+   end function n_written
+
+   !> Add a nodal field (values(n_components, n_nodes), 1 = scalar, 3 = vector) to the next
+   !> increment. The size is checked against the mesh in `write_increment`.
+   subroutine add_point_field(self, name, values)
+      class(vtk_series_t), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      if (.not. allocated(self%point_fields)) allocate (self%point_fields(0))
+      self%point_fields = [self%point_fields, named_field_t(name, values)]
+   end subroutine add_point_field
+
+   !> Add an element field (values(n_components, n_elements)) to the next increment.
+   subroutine add_cell_field(self, name, values)
+      class(vtk_series_t), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      if (.not. allocated(self%cell_fields)) allocate (self%cell_fields(0))
+      self%cell_fields = [self%cell_fields, named_field_t(name, values)]
+   end subroutine add_cell_field
+
+   !> Write `<base>_<step>_<increment>.vtu` for one converged increment and rewrite the `.pvd`.
+   subroutine write_increment(self, mesh, step, increment, time, displacement, reaction, stress, strain, error)
+      class(vtk_series_t), intent(inout) :: self
+      type(mesh_t), intent(in) :: mesh
+      integer, intent(in) :: step, increment
+      real(dp), intent(in) :: time                  !! load factor / pseudo time of the increment
+      real(dp), intent(in) :: displacement(:, :)    !! (3, n_nodes)
+      real(dp), intent(in) :: reaction(:, :)        !! (3, n_nodes), zero at free DOFs
+      real(dp), intent(in) :: stress(:, :, :)       !! (6, n_points, n_elements) Cauchy stress, frix Voigt
+      real(dp), intent(in) :: strain(:, :, :)       !! (6, n_points, n_elements) frix Voigt, engineering shears
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: node_stress(:, :), node_strain(:, :), cell_stress(:, :), cell_strain(:, :)
+      character(len=:), allocatable :: file_name, path
+      integer :: unit, stat, i
+      character(len=256) :: message
+
+      call check_sizes(self, mesh, displacement, reaction, stress, strain, error)
+      if (allocated(error)) return
+      allocate (node_stress(6, mesh%n_nodes), node_strain(6, mesh%n_nodes))
+      allocate (cell_stress(6, mesh%n_elements), cell_strain(6, mesh%n_elements))
+      call recover(mesh, stress, node_stress, cell_stress, error)
+      if (allocated(error)) return
+      call recover(mesh, strain, node_strain, cell_strain, error)
+      if (allocated(error)) return
+
+      file_name = base_name(self%base)//'_'//padded(step)//'_'//padded(increment)//'.vtu'
+      path = self%base//'_'//padded(step)//'_'//padded(increment)//'.vtu'
+      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=message)
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot open VTK file "'//path//'": '//trim(message))
+         return
+      end if
+      call put(unit, '<?xml version="1.0"?>', stat)
+      call put(unit, '<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64">', stat)
+      call put(unit, '<UnstructuredGrid>', stat)
+      call put(unit, '<FieldData>', stat)
+      call put_reals(unit, 'TimeValue', reshape([time], [1, 1]), stat, field_data=.true.)
+      call put_integers(unit, 'step', 'Int32', [step], stat, field_data=.true.)
+      call put_integers(unit, 'increment', 'Int32', [increment], stat, field_data=.true.)
+      call put(unit, '</FieldData>', stat)
+      call put(unit, '<Piece NumberOfPoints="'//to_string(mesh%n_nodes)//'" NumberOfCells="'// &
+               to_string(mesh%n_elements)//'">', stat)
+
+      call put(unit, '<PointData Vectors="displacement" Tensors="stress" Scalars="von_mises">', stat)
+      call put_reals(unit, 'displacement', displacement, stat)
+      call put_reals(unit, 'reaction', reaction, stat)
+      call put_reals(unit, 'stress', vtk_tensor_order(node_stress, 1.0_dp), stat)
+      call put_reals(unit, 'strain', vtk_tensor_order(node_strain, 0.5_dp), stat)
+      call put_reals(unit, 'von_mises', reshape(von_mises_field(node_stress), [1, mesh%n_nodes]), stat)
+      do i = 1, size(self%point_fields)
+         call put_reals(unit, self%point_fields(i)%name, self%point_fields(i)%values, stat)
+      end do
+      call put(unit, '</PointData>', stat)
+
+      call put(unit, '<CellData Tensors="stress" Scalars="von_mises">', stat)
+      call put_reals(unit, 'stress', vtk_tensor_order(cell_stress, 1.0_dp), stat)
+      call put_reals(unit, 'strain', vtk_tensor_order(cell_strain, 0.5_dp), stat)
+      call put_reals(unit, 'von_mises', reshape(von_mises_field(cell_stress), [1, mesh%n_elements]), stat)
+      call put_integers(unit, 'element_id', 'Int32', mesh%element_ids, stat)
+      call put_integers(unit, 'block', 'Int32', mesh%element_block, stat)
+      do i = 1, size(self%cell_fields)
+         call put_reals(unit, self%cell_fields(i)%name, self%cell_fields(i)%values, stat)
+      end do
+      call put(unit, '</CellData>', stat)
+
+      call put(unit, '<Points>', stat)
+      call put_reals(unit, 'coordinates', mesh%coords, stat)
+      call put(unit, '</Points>', stat)
+      call put(unit, '<Cells>', stat)
+      call put_integers(unit, 'connectivity', 'Int64', reshape(mesh%connectivity - 1, [8*mesh%n_elements]), stat, &
+                        per_line=8)
+      call put_integers(unit, 'offsets', 'Int64', [(8*i, i=1, mesh%n_elements)], stat)
+      call put_integers(unit, 'types', 'UInt8', [(vtk_hexahedron, i=1, mesh%n_elements)], stat)
+      call put(unit, '</Cells>', stat)
+      call put(unit, '</Piece>', stat)
+      call put(unit, '</UnstructuredGrid>', stat)
+      call put(unit, '</VTKFile>', stat)
+      if (stat /= 0) then
+         close (unit)
+         call fatal_error(error, 'cannot write VTK file "'//path//'" (iostat '//to_string(stat)//')')
+         return
+      end if
+      close (unit, iostat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot close VTK file "'//path//'" (iostat '//to_string(stat)//')')
+         return
+      end if
+
+      self%datasets = [self%datasets, dataset_entry_t(file_name, time)]
+      deallocate (self%point_fields, self%cell_fields)
+      allocate (self%point_fields(0), self%cell_fields(0))
+      call write_collection(self, error)
+   end subroutine write_increment
+
+   subroutine check_sizes(self, mesh, displacement, reaction, stress, strain, error)
+      type(vtk_series_t), intent(in) :: self
+      type(mesh_t), intent(in) :: mesh
+      real(dp), intent(in) :: displacement(:, :), reaction(:, :), stress(:, :, :), strain(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      if (.not. allocated(self%base)) then
+         call fatal_error(error, 'VTK series written before it was opened')
+      else if (any(shape(displacement) /= [3, mesh%n_nodes]) .or. any(shape(reaction) /= [3, mesh%n_nodes])) then
+         call fatal_error(error, 'VTK output: displacement and reaction must be (3, '//to_string(mesh%n_nodes)//')')
+      else if (.not. (allocated(mesh%element_ids) .and. allocated(mesh%element_block) .and. allocated(mesh%coords) &
+                      .and. allocated(mesh%connectivity))) then
+         call fatal_error(error, 'VTK output: the mesh lacks coordinates, connectivity, element ids or blocks')
+      else if (size(stress, 1) /= 6 .or. size(stress, 3) /= mesh%n_elements .or. any(shape(strain) /= shape(stress))) then
+         call fatal_error(error, 'VTK output: stress and strain must be (6, n_points, '//to_string(mesh%n_elements)//')')
+      end if
+      if (allocated(error)) return
+      do i = 1, size(self%point_fields)
+         if (size(self%point_fields(i)%values, 2) /= mesh%n_nodes) then
+            call fatal_error(error, 'VTK output: point field "'//self%point_fields(i)%name//'" has '// &
+                             to_string(size(self%point_fields(i)%values, 2))//' values, the mesh '// &
+                             to_string(mesh%n_nodes)//' nodes')
+            return
+         end if
+      end do
+      do i = 1, size(self%cell_fields)
+         if (size(self%cell_fields(i)%values, 2) /= mesh%n_elements) then
+            call fatal_error(error, 'VTK output: cell field "'//self%cell_fields(i)%name//'" has '// &
+                             to_string(size(self%cell_fields(i)%values, 2))//' values, the mesh '// &
+                             to_string(mesh%n_elements)//' elements')
+            return
+         end if
+      end do
+   end subroutine check_sizes
+
+   !> Nodal (extrapolated when the elements have 8 points) and cell values of a point field.
+   subroutine recover(mesh, gp, nodal, cell, error)
+      type(mesh_t), intent(in) :: mesh
+      real(dp), intent(in) :: gp(:, :, :)
+      real(dp), intent(out) :: nodal(:, :), cell(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      call cell_average(gp, cell)
+      if (size(gp, 2) == 8) then
+         call nodal_extrapolated(mesh%connectivity, gp, nodal, error)
+      else
+         call nodal_average(mesh%connectivity, gp, nodal)
+      end if
+   end subroutine recover
+
+   !> frix Voigt (xx yy zz xy xz yz) to VTK symmetric tensor order (XX YY ZZ XY YZ XZ), the
+   !> shears multiplied by `shear_factor` (1 for stress, 1/2 for engineering strains).
+   pure function vtk_tensor_order(voigt, shear_factor) result(tensor)
+      real(dp), intent(in) :: voigt(:, :)
+      real(dp), intent(in) :: shear_factor
+      real(dp) :: tensor(6, size(voigt, 2))
+      tensor(1:3, :) = voigt(1:3, :)
+      tensor(4, :) = shear_factor*voigt(4, :)
+      tensor(5, :) = shear_factor*voigt(6, :)
+      tensor(6, :) = shear_factor*voigt(5, :)
+   end function vtk_tensor_order
+
+   !> Rewrite `<base>.pvd` listing every dataset written so far.
+   subroutine write_collection(self, error)
+      type(vtk_series_t), intent(in) :: self
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: path
+      character(len=256) :: message
+      character(len=24) :: time_text
+      integer :: unit, stat, i
+      path = self%base//'.pvd'
+      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=message)
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot open ParaView collection "'//path//'": '//trim(message))
+         return
+      end if
+      call put(unit, '<?xml version="1.0"?>', stat)
+      call put(unit, '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">', stat)
+      call put(unit, '<Collection>', stat)
+      do i = 1, size(self%datasets)
+         if (stat == 0) write (time_text, '('//real_edit//')', iostat=stat) self%datasets(i)%time
+         call put(unit, '<DataSet timestep="'//trim(adjustl(time_text))//'" group="" part="0" file="'// &
+                  self%datasets(i)%file_name//'"/>', stat)
+      end do
+      call put(unit, '</Collection>', stat)
+      call put(unit, '</VTKFile>', stat)
+      if (stat /= 0) then
+         close (unit)
+         call fatal_error(error, 'cannot write ParaView collection "'//path//'" (iostat '//to_string(stat)//')')
+         return
+      end if
+      close (unit, iostat=stat)
+      if (stat /= 0) call fatal_error(error, 'cannot close ParaView collection "'//path//'"')
+   end subroutine write_collection
+
+   !> Write one line unless an earlier write failed (`stat` /= 0 skips everything after).
+   subroutine put(unit, text, stat)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: text
+      integer, intent(inout) :: stat
+      if (stat /= 0) return
+      write (unit, '(a)', iostat=stat) text
+   end subroutine put
+
+   !> A Float64 DataArray, one tuple (column of `values`) per line.
+   subroutine put_reals(unit, name, values, stat, field_data)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)          !! (n_components, n_tuples)
+      integer, intent(inout) :: stat
+      logical, intent(in), optional :: field_data   !! FieldData arrays carry NumberOfTuples
+      character(len=:), allocatable :: line_format
+      integer :: i
+      line_format = '('//to_string(size(values, 1))//'(1x,'//real_edit//'))'
+      if (is_true(field_data)) then
+         call put(unit, '<DataArray type="Float64" Name="'//name//'" NumberOfTuples="'// &
+                  to_string(size(values, 2))//'" format="ascii">', stat)
+      else
+         call put(unit, '<DataArray type="Float64" Name="'//name//'" NumberOfComponents="'// &
+                  to_string(size(values, 1))//'" format="ascii">', stat)
+      end if
+      do i = 1, size(values, 2)
+         if (stat /= 0) return
+         write (unit, line_format, iostat=stat) values(:, i)
+      end do
+      call put(unit, '</DataArray>', stat)
+   end subroutine put_reals
+
+   !> An integer DataArray of VTK type `vtk_type` (Int32, Int64, UInt8), `per_line` values per line.
+   subroutine put_integers(unit, name, vtk_type, values, stat, per_line, field_data)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: name, vtk_type
+      integer, intent(in) :: values(:)
+      integer, intent(inout) :: stat
+      integer, intent(in), optional :: per_line
+      logical, intent(in), optional :: field_data
+      integer :: first, last, chunk
+      chunk = 10
+      if (present(per_line)) chunk = per_line
+      if (is_true(field_data)) then
+         call put(unit, '<DataArray type="'//vtk_type//'" Name="'//name//'" NumberOfTuples="'// &
+                  to_string(size(values))//'" format="ascii">', stat)
+      else
+         call put(unit, '<DataArray type="'//vtk_type//'" Name="'//name//'" format="ascii">', stat)
+      end if
+      do first = 1, size(values), chunk
+         if (stat /= 0) return
+         last = min(first + chunk - 1, size(values))
+         write (unit, '(*(1x,i0))', iostat=stat) values(first:last)
+      end do
+      call put(unit, '</DataArray>', stat)
+   end subroutine put_integers
+
+   !> An optional flag, false when absent.
+   pure logical function is_true(flag)
+      logical, intent(in), optional :: flag
+      is_true = .false.
+      if (present(flag)) is_true = flag
+   end function is_true
+
+   !> Integer with at least 4 digits, zero-padded (file names sort in order).
+   pure function padded(value) result(text)
+      integer, intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      write (buffer, '(i0.4)') value
+      text = trim(buffer)
+   end function padded
+
+   !> The part of `path` after its last '/'.
+   pure function base_name(path) result(name)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: name
+      name = path(index(path, '/', back=.true.) + 1:)
+   end function base_name
+end module frix_vtk_writer

@@ -1,0 +1,202 @@
+!> Sparse Cholesky (CHOLMOD, SuiteSparse 5.12, supernodal LL') for symmetric positive definite
+!> systems. Only the upper triangle of the full CSC storage is read (stype = 1). The
+!> fill-reducing ordering is METIS nested dissection of the node graph
+!> (frix_metis_ordering), handed to CHOLMOD as a user permutation. cholmod_common lives in
+!> the C glue cholmod_shim.c behind an opaque handle.
+!>
+!> Do not copy a cholmod_solver_t (assignment would share the handle); pass it around.
+module frix_cholmod_solver
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_null_ptr, c_associated
+   use frix_kinds, only: dp, i4, i8
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message
+   use frix_metis_ordering, only: metis_dof_permutation
+   implicit none
+   private
+
+   public :: cholmod_solver_t
+
+   integer(c_int), parameter :: cholmod_not_posdef = 1   !! CHOLMOD_NOT_POSDEF in cholmod_core.h
+
+   !> CHOLMOD behind linear_solver_t.
+   type, extends(linear_solver_t) :: cholmod_solver_t
+      type(c_ptr), private :: handle = c_null_ptr   !! frix_cholmod_t* of cholmod_shim.c
+   contains
+      procedure :: name
+      procedure :: factorize
+      procedure :: solve
+      procedure :: release
+      final :: finalize
+   end type cholmod_solver_t
+
+   interface
+      function frix_cholmod_create() bind(C, name='frix_cholmod_create') result(handle)
+         import :: c_ptr
+         type(c_ptr) :: handle
+      end function frix_cholmod_create
+
+      subroutine frix_cholmod_destroy(handle) bind(C, name='frix_cholmod_destroy')
+         import :: c_ptr
+         type(c_ptr), value :: handle
+      end subroutine frix_cholmod_destroy
+
+      function frix_cholmod_analyse(handle, n, col_ptr, row_index, values, permutation, lnz) &
+         bind(C, name='frix_cholmod_analyse') result(status)
+         import :: c_ptr, c_int, c_double
+         type(c_ptr), value :: handle
+         integer(c_int), value :: n
+         integer(c_int), intent(in) :: col_ptr(*), row_index(*), permutation(*)
+         real(c_double), intent(in) :: values(*)
+         real(c_double), intent(out) :: lnz
+         integer(c_int) :: status
+      end function frix_cholmod_analyse
+
+      function frix_cholmod_factorize(handle, n, col_ptr, row_index, values, failed, min_pivot, max_pivot) &
+         bind(C, name='frix_cholmod_factorize') result(status)
+         import :: c_ptr, c_int, c_double
+         type(c_ptr), value :: handle
+         integer(c_int), value :: n
+         integer(c_int), intent(in) :: col_ptr(*), row_index(*)
+         real(c_double), intent(in) :: values(*)
+         integer(c_int), intent(out) :: failed
+         real(c_double), intent(out) :: min_pivot, max_pivot
+         integer(c_int) :: status
+      end function frix_cholmod_factorize
+
+      function frix_cholmod_solve(handle, n, rhs, x) bind(C, name='frix_cholmod_solve') result(status)
+         import :: c_ptr, c_int, c_double
+         type(c_ptr), value :: handle
+         integer(c_int), value :: n
+         real(c_double), intent(in) :: rhs(*)
+         real(c_double), intent(out) :: x(*)
+         integer(c_int) :: status
+      end function frix_cholmod_solve
+
+      subroutine frix_cholmod_memory(handle, peak, in_use) bind(C, name='frix_cholmod_memory')
+         import :: c_ptr, c_double
+         type(c_ptr), value :: handle
+         real(c_double), intent(out) :: peak, in_use
+      end subroutine frix_cholmod_memory
+   end interface
+
+contains
+
+   function name(solver) result(keyword)
+      class(cholmod_solver_t), intent(in) :: solver
+      character(len=:), allocatable :: keyword
+      keyword = 'CHOLMOD'
+   end function name
+
+   !> METIS ordering + symbolic analysis when the pattern changed, then numeric LL'.
+   !> Not positive definite (failed pivot) or a pivot ratio below singular_pivot_ratio gives
+   !> an error naming the original equation.
+   subroutine factorize(solver, matrix, error)
+      class(cholmod_solver_t), intent(inout) :: solver
+      type(sparse_matrix_t), intent(in), target :: matrix
+      type(error_t), allocatable, intent(out) :: error
+      integer(i4), allocatable :: permutation(:)
+      integer(c_int) :: status, failed
+      real(c_double) :: lnz, min_pivot, max_pivot, peak, in_use
+      real(dp) :: start
+
+      solver%failed_equation = 0
+      solver%factorized_pattern_id = 0
+      if (matrix%pattern_id == 0 .or. matrix%n == 0) then
+         call fatal_error(error, 'CHOLMOD: the matrix has no pattern')
+         return
+      end if
+      if (.not. c_associated(solver%handle)) solver%handle = frix_cholmod_create()
+      if (.not. c_associated(solver%handle)) then
+         call fatal_error(error, 'CHOLMOD: out of memory creating cholmod_common')
+         return
+      end if
+
+      if (matrix%pattern_id /= solver%analysed_pattern_id) then
+         start = wall_clock_seconds()
+         solver%analysed_pattern_id = 0
+         call metis_dof_permutation(matrix, permutation, error)
+         if (allocated(error)) return
+         status = frix_cholmod_analyse(solver%handle, int(matrix%n, c_int), matrix%col_ptr, matrix%row_index, &
+                                       matrix%values, permutation, lnz)
+         solver%last_analyse_seconds = wall_clock_seconds() - start
+         solver%analyse_seconds = solver%analyse_seconds + solver%last_analyse_seconds
+         if (status < 0) then
+            call fatal_error(error, 'CHOLMOD: symbolic analysis failed, status '//to_string(int(status)))
+            return
+         end if
+         solver%n_analyses = solver%n_analyses + 1
+         solver%analysed_pattern_id = matrix%pattern_id
+         solver%factor_entries = int(lnz, i8)
+      end if
+
+      start = wall_clock_seconds()
+      status = frix_cholmod_factorize(solver%handle, int(matrix%n, c_int), matrix%col_ptr, matrix%row_index, &
+                                      matrix%values, failed, min_pivot, max_pivot)
+      solver%last_factorize_seconds = wall_clock_seconds() - start
+      solver%factorize_seconds = solver%factorize_seconds + solver%last_factorize_seconds
+      solver%n_factorizations = solver%n_factorizations + 1
+      call frix_cholmod_memory(solver%handle, peak, in_use)
+      solver%peak_memory_bytes = int(peak, i8)
+
+      if (status == cholmod_not_posdef) then
+         solver%failed_equation = int(failed) + 1
+         if (failed < 0) solver%failed_equation = 0
+         call singular_matrix_message(error, 'CHOLMOD', 'singular or not positive definite', &
+                                      solver%failed_equation, 'zero or negative pivot')
+         return
+      else if (status < 0) then
+         call fatal_error(error, 'CHOLMOD: numeric factorization failed, status '//to_string(int(status)))
+         return
+      end if
+      if (.not. (min_pivot > solver%singular_pivot_ratio*max_pivot)) then
+         solver%failed_equation = int(failed) + 1
+         call singular_matrix_message(error, 'CHOLMOD', 'singular or not positive definite', &
+                                      solver%failed_equation, 'pivot ratio '// &
+                                      to_string(real(min_pivot/max(max_pivot, tiny(1.0_dp)), dp))// &
+                                      ' below '//to_string(solver%singular_pivot_ratio))
+         return
+      end if
+      solver%factorized_pattern_id = matrix%pattern_id
+   end subroutine factorize
+
+   subroutine solve(solver, matrix, rhs, x, error)
+      class(cholmod_solver_t), intent(inout) :: solver
+      type(sparse_matrix_t), intent(in), target :: matrix
+      real(dp), intent(in), target :: rhs(:)
+      real(dp), intent(out), target :: x(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int) :: status
+      real(dp) :: start
+
+      if (solver%factorized_pattern_id == 0 .or. solver%factorized_pattern_id /= matrix%pattern_id) then
+         call fatal_error(error, 'CHOLMOD: solve called without a successful factorize of this matrix')
+         return
+      end if
+      if (size(rhs) /= matrix%n .or. size(x) /= matrix%n) then
+         call fatal_error(error, 'CHOLMOD: right-hand side or solution size differs from '//to_string(matrix%n))
+         return
+      end if
+      start = wall_clock_seconds()
+      status = frix_cholmod_solve(solver%handle, int(matrix%n, c_int), rhs, x)
+      solver%last_solve_seconds = wall_clock_seconds() - start
+      solver%solve_seconds = solver%solve_seconds + solver%last_solve_seconds
+      solver%n_solves = solver%n_solves + 1
+      if (status < 0) call fatal_error(error, 'CHOLMOD: solve failed, status '//to_string(int(status)))
+   end subroutine solve
+
+   !> Free factor and cholmod_common; the next factorize starts afresh (new analysis).
+   subroutine release(solver)
+      class(cholmod_solver_t), intent(inout) :: solver
+      if (c_associated(solver%handle)) call frix_cholmod_destroy(solver%handle)
+      solver%handle = c_null_ptr
+      solver%analysed_pattern_id = 0
+      solver%factorized_pattern_id = 0
+   end subroutine release
+
+   subroutine finalize(solver)
+      type(cholmod_solver_t), intent(inout) :: solver
+      call solver%release()
+   end subroutine finalize
+end module frix_cholmod_solver

@@ -1,0 +1,105 @@
+!> The one interface of the direct sparse solvers (one concrete type per file behind it:
+!> CHOLMOD, UMFPACK). Usage: `factorize(matrix, error)` after every change of values (the
+!> symbolic analysis is redone only when `matrix%pattern_id` changed), then any number of
+!> `solve(matrix, rhs, x, error)`; `release()` frees the factors.
+module frix_linear_solver
+   use frix_kinds, only: dp, i8
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_sparse_matrix, only: sparse_matrix_t
+   implicit none
+   private
+
+   public :: linear_solver_t, wall_clock_seconds, singular_matrix_message
+
+   !> Abstract direct solver. Timings are wall clock seconds (system_clock).
+   type, abstract :: linear_solver_t
+      real(dp) :: analyse_seconds = 0.0_dp          !! accumulated symbolic analysis time [s]
+      real(dp) :: factorize_seconds = 0.0_dp        !! accumulated numeric factorization time [s]
+      real(dp) :: solve_seconds = 0.0_dp            !! accumulated solve time [s]
+      real(dp) :: last_analyse_seconds = 0.0_dp     !! time of the last analysis [s]
+      real(dp) :: last_factorize_seconds = 0.0_dp   !! time of the last factorization [s]
+      real(dp) :: last_solve_seconds = 0.0_dp       !! time of the last solve [s]
+      integer :: n_analyses = 0                     !! symbolic analyses done
+      integer :: n_factorizations = 0               !! numeric factorizations done (successful or not)
+      integer :: n_solves = 0                       !! solves done
+      !> 1-based equation where a zero/negative/tiny pivot was found by the last factorize,
+      !> 0 if none or unknown. Node = (equation-1)/3 + 1, direction = mod(equation-1, 3) + 1.
+      integer :: failed_equation = 0
+      !> A factorization whose smallest pivot is below `singular_pivot_ratio` times the
+      !> largest (|u_kk| for LU, l_kk^2 for Cholesky) is reported as singular: a condition
+      !> number above 1/ratio leaves no correct digit worth having in double precision.
+      real(dp) :: singular_pivot_ratio = 1.0e-12_dp
+      integer(i8) :: peak_memory_bytes = 0          !! peak memory of the solver's last analysis+factorization
+      integer(i8) :: factor_entries = 0             !! entries of the factor(s) of the last factorization
+      integer :: analysed_pattern_id = 0            !! pattern_id of the matrix analysed last (0: none)
+      integer :: factorized_pattern_id = 0          !! pattern_id of the valid factorization (0: none)
+   contains
+      procedure(name_interface), deferred :: name
+      procedure(factorize_interface), deferred :: factorize
+      procedure(solve_interface), deferred :: solve
+      procedure(release_interface), deferred :: release
+   end type linear_solver_t
+
+   abstract interface
+      !> Keyword of the solver ('CHOLMOD', 'UMFPACK').
+      function name_interface(solver) result(name)
+         import :: linear_solver_t
+         class(linear_solver_t), intent(in) :: solver
+         character(len=:), allocatable :: name
+      end function name_interface
+
+      !> Symbolic analysis when `matrix%pattern_id` differs from the one analysed last, then
+      !> numeric factorization. A singular (or, for Cholesky, not positive definite) matrix
+      !> gives an error and sets `failed_equation`.
+      subroutine factorize_interface(solver, matrix, error)
+         import :: linear_solver_t, sparse_matrix_t, error_t
+         class(linear_solver_t), intent(inout) :: solver
+         type(sparse_matrix_t), intent(in), target :: matrix
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine factorize_interface
+
+      !> x = A^-1 rhs with the factors of the last successful `factorize` of `matrix`.
+      subroutine solve_interface(solver, matrix, rhs, x, error)
+         import :: linear_solver_t, sparse_matrix_t, error_t, dp
+         class(linear_solver_t), intent(inout) :: solver
+         type(sparse_matrix_t), intent(in), target :: matrix
+         real(dp), intent(in), target :: rhs(:)        !! (n)
+         real(dp), intent(out), target :: x(:)         !! (n)
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine solve_interface
+
+      !> Free the factors and the symbolic analysis (the next factorize analyses again).
+      subroutine release_interface(solver)
+         import :: linear_solver_t
+         class(linear_solver_t), intent(inout) :: solver
+      end subroutine release_interface
+   end interface
+
+contains
+
+   !> Wall clock time in seconds from an arbitrary origin (system_clock, 64-bit counter).
+   function wall_clock_seconds() result(seconds)
+      real(dp) :: seconds
+      integer(i8) :: count, rate
+      call system_clock(count, rate)
+      seconds = real(count, dp)/real(rate, dp)
+   end function wall_clock_seconds
+
+   !> The common error text for a singular or indefinite matrix, naming equation, node and
+   !> direction (equation = 3*(node-1) + direction); `equation` 0 means unknown.
+   subroutine singular_matrix_message(error, solver_name, condition, equation, detail)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: solver_name
+      character(len=*), intent(in) :: condition  !! 'singular' or 'singular or not positive definite'
+      integer, intent(in) :: equation
+      character(len=*), intent(in) :: detail   !! e.g. 'zero pivot', 'pivot ratio 1e-17'
+      if (equation > 0) then
+         call fatal_error(error, solver_name//': matrix is '//condition//' at equation '// &
+                          to_string(equation)//' (node '//to_string((equation - 1)/3 + 1)//', direction '// &
+                          to_string(mod(equation - 1, 3) + 1)//'): '//detail)
+      else
+         call fatal_error(error, solver_name//': matrix is '//condition//': '//detail)
+      end if
+   end subroutine singular_matrix_message
+end module frix_linear_solver

@@ -1,0 +1,241 @@
+!> Sparse LU (UMFPACK `umfpack_di_*`, SuiteSparse 5.12) for unsymmetric systems, bound
+!> directly through iso_c_binding: CSC is UMFPACK's native format (Ap = col_ptr,
+!> Ai = row_index, Ax = values, 0-based int32). Ordering: METIS (UMFPACK_ORDERING_METIS);
+!> the Symbolic object is reused while the matrix pattern_id is unchanged.
+!>
+!> Control/Info indices below are the C constants of umfpack.h; the Fortran arrays are
+!> 1-based, so C index k is element k+1.
+!> Do not copy an umfpack_solver_t (assignment would share the Symbolic/Numeric objects).
+module frix_umfpack_solver
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_null_ptr, c_associated, c_loc
+   use frix_kinds, only: dp, i8
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message
+   implicit none
+   private
+
+   public :: umfpack_solver_t
+
+   integer, parameter :: umfpack_control = 20                  !! UMFPACK_CONTROL
+   integer, parameter :: umfpack_info = 90                     !! UMFPACK_INFO
+   integer, parameter :: umfpack_ordering = 10                 !! Control index UMFPACK_ORDERING
+   real(c_double), parameter :: umfpack_ordering_metis = 3.0_c_double  !! UMFPACK_ORDERING_METIS
+   integer, parameter :: umfpack_size_of_unit = 3              !! Info index UMFPACK_SIZE_OF_UNIT
+   integer, parameter :: umfpack_peak_memory = 41              !! Info index UMFPACK_PEAK_MEMORY (units)
+   integer, parameter :: umfpack_lnz = 43                      !! Info index UMFPACK_LNZ
+   integer, parameter :: umfpack_unz = 44                      !! Info index UMFPACK_UNZ
+   integer, parameter :: umfpack_rcond = 67                    !! Info index UMFPACK_RCOND (min/max |u_kk|)
+   integer(c_int), parameter :: umfpack_ok = 0                 !! UMFPACK_OK
+   integer(c_int), parameter :: umfpack_warning_singular_matrix = 1  !! UMFPACK_WARNING_singular_matrix
+   integer(c_int), parameter :: umfpack_system_a = 0           !! UMFPACK_A: solve A x = b
+
+   !> UMFPACK behind linear_solver_t.
+   type, extends(linear_solver_t) :: umfpack_solver_t
+      type(c_ptr), private :: symbolic = c_null_ptr
+      type(c_ptr), private :: numeric = c_null_ptr
+      real(c_double), private :: control(umfpack_control) = 0.0_c_double
+      real(c_double) :: info(umfpack_info) = 0.0_c_double   !! UMFPACK Info of the last call
+   contains
+      procedure :: name
+      procedure :: factorize
+      procedure :: solve
+      procedure :: release
+      final :: finalize
+   end type umfpack_solver_t
+
+   interface
+      subroutine umfpack_di_defaults(control) bind(C, name='umfpack_di_defaults')
+         import :: c_double
+         real(c_double), intent(out) :: control(*)
+      end subroutine umfpack_di_defaults
+
+      function umfpack_di_symbolic(n_row, n_col, ap, ai, ax, symbolic, control, info) &
+         bind(C, name='umfpack_di_symbolic') result(status)
+         import :: c_int, c_double, c_ptr
+         integer(c_int), value :: n_row, n_col
+         integer(c_int), intent(in) :: ap(*), ai(*)
+         real(c_double), intent(in) :: ax(*)
+         type(c_ptr), intent(out) :: symbolic
+         real(c_double), intent(in) :: control(*)
+         real(c_double), intent(out) :: info(*)
+         integer(c_int) :: status
+      end function umfpack_di_symbolic
+
+      function umfpack_di_numeric(ap, ai, ax, symbolic, numeric, control, info) &
+         bind(C, name='umfpack_di_numeric') result(status)
+         import :: c_int, c_double, c_ptr
+         integer(c_int), intent(in) :: ap(*), ai(*)
+         real(c_double), intent(in) :: ax(*)
+         type(c_ptr), value :: symbolic
+         type(c_ptr), intent(out) :: numeric
+         real(c_double), intent(in) :: control(*)
+         real(c_double), intent(out) :: info(*)
+         integer(c_int) :: status
+      end function umfpack_di_numeric
+
+      function umfpack_di_solve(system, ap, ai, ax, x, b, numeric, control, info) &
+         bind(C, name='umfpack_di_solve') result(status)
+         import :: c_int, c_double, c_ptr
+         integer(c_int), value :: system
+         integer(c_int), intent(in) :: ap(*), ai(*)
+         real(c_double), intent(in) :: ax(*)
+         real(c_double), intent(out) :: x(*)
+         real(c_double), intent(in) :: b(*)
+         type(c_ptr), value :: numeric
+         real(c_double), intent(in) :: control(*)
+         real(c_double), intent(out) :: info(*)
+         integer(c_int) :: status
+      end function umfpack_di_solve
+
+      subroutine umfpack_di_free_symbolic(symbolic) bind(C, name='umfpack_di_free_symbolic')
+         import :: c_ptr
+         type(c_ptr), intent(inout) :: symbolic
+      end subroutine umfpack_di_free_symbolic
+
+      subroutine umfpack_di_free_numeric(numeric) bind(C, name='umfpack_di_free_numeric')
+         import :: c_ptr
+         type(c_ptr), intent(inout) :: numeric
+      end subroutine umfpack_di_free_numeric
+
+      !> Every array argument may be NULL (not returned); used here for Q and diag(U) only.
+      function umfpack_di_get_numeric(lp, lj, lx, up, ui, ux, p, q, dx, do_recip, rs, numeric) &
+         bind(C, name='umfpack_di_get_numeric') result(status)
+         import :: c_int, c_ptr
+         type(c_ptr), value :: lp, lj, lx, up, ui, ux, p, q, dx, do_recip, rs
+         type(c_ptr), value :: numeric
+         integer(c_int) :: status
+      end function umfpack_di_get_numeric
+   end interface
+
+contains
+
+   function name(solver) result(keyword)
+      class(umfpack_solver_t), intent(in) :: solver
+      character(len=:), allocatable :: keyword
+      keyword = 'UMFPACK'
+   end function name
+
+   !> umfpack_di_symbolic when the pattern changed, then umfpack_di_numeric. A singular
+   !> matrix (UMFPACK_WARNING_singular_matrix, or min/max |u_kk| below singular_pivot_ratio)
+   !> gives an error naming the original column of the smallest pivot.
+   subroutine factorize(solver, matrix, error)
+      class(umfpack_solver_t), intent(inout) :: solver
+      type(sparse_matrix_t), intent(in), target :: matrix
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int) :: status
+      real(dp) :: start
+
+      solver%failed_equation = 0
+      solver%factorized_pattern_id = 0
+      if (matrix%pattern_id == 0 .or. matrix%n == 0) then
+         call fatal_error(error, 'UMFPACK: the matrix has no pattern')
+         return
+      end if
+      if (c_associated(solver%numeric)) call umfpack_di_free_numeric(solver%numeric)
+
+      if (matrix%pattern_id /= solver%analysed_pattern_id) then
+         if (c_associated(solver%symbolic)) call umfpack_di_free_symbolic(solver%symbolic)
+         solver%analysed_pattern_id = 0
+         call umfpack_di_defaults(solver%control)
+         solver%control(umfpack_ordering + 1) = umfpack_ordering_metis
+         start = wall_clock_seconds()
+         status = umfpack_di_symbolic(int(matrix%n, c_int), int(matrix%n, c_int), matrix%col_ptr, &
+                                      matrix%row_index, matrix%values, solver%symbolic, solver%control, solver%info)
+         solver%last_analyse_seconds = wall_clock_seconds() - start
+         solver%analyse_seconds = solver%analyse_seconds + solver%last_analyse_seconds
+         if (status /= umfpack_ok) then
+            call fatal_error(error, 'UMFPACK: symbolic analysis failed, status '//to_string(int(status)))
+            return
+         end if
+         solver%n_analyses = solver%n_analyses + 1
+         solver%analysed_pattern_id = matrix%pattern_id
+      end if
+
+      start = wall_clock_seconds()
+      status = umfpack_di_numeric(matrix%col_ptr, matrix%row_index, matrix%values, solver%symbolic, &
+                                  solver%numeric, solver%control, solver%info)
+      solver%last_factorize_seconds = wall_clock_seconds() - start
+      solver%factorize_seconds = solver%factorize_seconds + solver%last_factorize_seconds
+      solver%n_factorizations = solver%n_factorizations + 1
+      solver%peak_memory_bytes = int(solver%info(umfpack_peak_memory + 1)*solver%info(umfpack_size_of_unit + 1), i8)
+      solver%factor_entries = int(solver%info(umfpack_lnz + 1) + solver%info(umfpack_unz + 1), i8)
+
+      if (status == umfpack_warning_singular_matrix) then
+         solver%failed_equation = smallest_pivot_column(solver, matrix%n)
+         call singular_matrix_message(error, 'UMFPACK', 'singular', solver%failed_equation, 'zero pivot')
+         return
+      else if (status /= umfpack_ok .and. status < 0) then
+         call fatal_error(error, 'UMFPACK: numeric factorization failed, status '//to_string(int(status)))
+         return
+      end if
+      if (.not. (solver%info(umfpack_rcond + 1) > solver%singular_pivot_ratio)) then
+         solver%failed_equation = smallest_pivot_column(solver, matrix%n)
+         call singular_matrix_message(error, 'UMFPACK', 'singular', solver%failed_equation, &
+                                      'pivot ratio '//to_string(real(solver%info(umfpack_rcond + 1), dp))// &
+                                      ' below '//to_string(solver%singular_pivot_ratio))
+         return
+      end if
+      solver%factorized_pattern_id = matrix%pattern_id
+   end subroutine factorize
+
+   !> 1-based original column of the pivot of smallest |u_kk| (column permutation Q of
+   !> P R A Q = L U), 0 if UMFPACK cannot return it.
+   function smallest_pivot_column(solver, n) result(column)
+      class(umfpack_solver_t), intent(in) :: solver
+      integer, intent(in) :: n
+      integer :: column
+      integer(c_int), allocatable, target :: q(:)
+      real(c_double), allocatable, target :: diagonal(:)
+      integer(c_int) :: status
+      allocate (q(n), diagonal(n))
+      column = 0
+      status = umfpack_di_get_numeric(c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, &
+                                      c_null_ptr, c_loc(q), c_loc(diagonal), c_null_ptr, c_null_ptr, solver%numeric)
+      if (status /= umfpack_ok) return
+      column = q(minloc(abs(diagonal), dim=1)) + 1
+   end function smallest_pivot_column
+
+   subroutine solve(solver, matrix, rhs, x, error)
+      class(umfpack_solver_t), intent(inout) :: solver
+      type(sparse_matrix_t), intent(in), target :: matrix
+      real(dp), intent(in), target :: rhs(:)
+      real(dp), intent(out), target :: x(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int) :: status
+      real(dp) :: start
+
+      if (solver%factorized_pattern_id == 0 .or. solver%factorized_pattern_id /= matrix%pattern_id) then
+         call fatal_error(error, 'UMFPACK: solve called without a successful factorize of this matrix')
+         return
+      end if
+      if (size(rhs) /= matrix%n .or. size(x) /= matrix%n) then
+         call fatal_error(error, 'UMFPACK: right-hand side or solution size differs from '//to_string(matrix%n))
+         return
+      end if
+      start = wall_clock_seconds()
+      status = umfpack_di_solve(umfpack_system_a, matrix%col_ptr, matrix%row_index, matrix%values, x, rhs, &
+                                solver%numeric, solver%control, solver%info)
+      solver%last_solve_seconds = wall_clock_seconds() - start
+      solver%solve_seconds = solver%solve_seconds + solver%last_solve_seconds
+      solver%n_solves = solver%n_solves + 1
+      if (status /= umfpack_ok) call fatal_error(error, 'UMFPACK: solve failed, status '//to_string(int(status)))
+   end subroutine solve
+
+   !> Free Numeric and Symbolic; the next factorize analyses again.
+   subroutine release(solver)
+      class(umfpack_solver_t), intent(inout) :: solver
+      if (c_associated(solver%numeric)) call umfpack_di_free_numeric(solver%numeric)
+      if (c_associated(solver%symbolic)) call umfpack_di_free_symbolic(solver%symbolic)
+      solver%numeric = c_null_ptr
+      solver%symbolic = c_null_ptr
+      solver%analysed_pattern_id = 0
+      solver%factorized_pattern_id = 0
+   end subroutine release
+
+   subroutine finalize(solver)
+      type(umfpack_solver_t), intent(inout) :: solver
+      call solver%release()
+   end subroutine finalize
+end module frix_umfpack_solver

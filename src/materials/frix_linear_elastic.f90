@@ -1,0 +1,93 @@
+!> Isotropic linear elasticity (Hooke's law) in the Voigt convention of frix_material:
+!> stress = D strain with D = lambda 1 (x) 1 + 2 mu I, where, because strains carry engineering
+!> shears (gamma_xy = 2 eps_xy), the shear diagonal of D is mu (tau_xy = mu gamma_xy).
+!>
+!> Lame parameters from Young's modulus E and Poisson's ratio nu (any textbook, e.g.
+!> Timoshenko & Goodier): lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)).
+!> Units: stresses and moduli in the user's consistent stress unit; strains dimensionless.
+module frix_linear_elastic
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_material, only: material_t
+   implicit none
+   private
+
+   public :: linear_elastic_t, new_linear_elastic, lame_parameters, hooke_tangent
+
+   !> Hooke's law; no history. Valid for 0 < young and -1 < poisson < 0.5 (the registry
+   !> checks this before constructing).
+   type, extends(material_t) :: linear_elastic_t
+      real(dp) :: young = 0.0_dp    !! Young's modulus E (stress unit)
+      real(dp) :: poisson = 0.0_dp  !! Poisson's ratio nu (dimensionless)
+   contains
+      procedure :: n_state => linear_elastic_n_state
+      procedure :: response => linear_elastic_response
+      procedure :: elastic_tangent => linear_elastic_elastic_tangent
+   end type linear_elastic_t
+
+contains
+
+   !> Hooke material named by the deck keyword MAT_Struct_LinearElastic.
+   pure function new_linear_elastic(young, poisson, density) result(material)
+      real(dp), intent(in) :: young    !! Young's modulus E (stress unit), > 0
+      real(dp), intent(in) :: poisson  !! Poisson's ratio nu, in (-1, 0.5)
+      real(dp), intent(in) :: density  !! mass per unit reference volume, >= 0
+      type(linear_elastic_t) :: material
+      material%name = 'MAT_Struct_LinearElastic'
+      material%young = young
+      material%poisson = poisson
+      material%density = density
+   end function new_linear_elastic
+
+   !> Lame parameters lambda and mu (shear modulus) from E and nu.
+   pure subroutine lame_parameters(young, poisson, lambda, mu)
+      real(dp), intent(in) :: young    !! Young's modulus E
+      real(dp), intent(in) :: poisson  !! Poisson's ratio nu
+      real(dp), intent(out) :: lambda  !! lambda = E nu / ((1 + nu)(1 - 2 nu))
+      real(dp), intent(out) :: mu      !! mu = G = E / (2 (1 + nu))
+      lambda = young*poisson/((1.0_dp + poisson)*(1.0_dp - 2.0_dp*poisson))
+      mu = young/(2.0_dp*(1.0_dp + poisson))
+   end subroutine lame_parameters
+
+   !> Isotropic modulus matrix D (6 x 6, Voigt xx yy zz xy xz yz, engineering shear strains):
+   !> D_ij = lambda + 2 mu delta_ij for i, j <= 3; D_ii = mu for the shear rows; zero elsewhere.
+   pure function hooke_tangent(young, poisson) result(tangent)
+      real(dp), intent(in) :: young    !! Young's modulus E
+      real(dp), intent(in) :: poisson  !! Poisson's ratio nu
+      real(dp) :: tangent(6, 6)
+      real(dp) :: lambda, mu
+      integer :: i
+      call lame_parameters(young, poisson, lambda, mu)
+      tangent = 0.0_dp
+      tangent(1:3, 1:3) = lambda
+      do i = 1, 3
+         tangent(i, i) = lambda + 2.0_dp*mu
+         tangent(i + 3, i + 3) = mu
+      end do
+   end function hooke_tangent
+
+   pure function linear_elastic_n_state(self) result(n)
+      class(linear_elastic_t), intent(in) :: self
+      integer :: n
+      n = 0
+   end function linear_elastic_n_state
+
+   !> stress = D strain; tangent = D. Never fails; the history arrays are empty and untouched.
+   subroutine linear_elastic_response(self, strain, state_old, state_new, stress, tangent, error)
+      class(linear_elastic_t), intent(in) :: self
+      real(dp), intent(in) :: strain(6)        !! eps or E, Voigt, engineering shears
+      real(dp), intent(in) :: state_old(:)     !! unused (no history)
+      real(dp), intent(inout) :: state_new(:)  !! unused (no history)
+      real(dp), intent(out) :: stress(6)       !! sigma or S, Voigt, tensor shears
+      real(dp), intent(out) :: tangent(6, 6)   !! D
+      type(error_t), allocatable, intent(out) :: error
+      tangent = hooke_tangent(self%young, self%poisson)
+      stress = matmul(tangent, strain)
+   end subroutine linear_elastic_response
+
+   pure subroutine linear_elastic_elastic_tangent(self, tangent)
+      class(linear_elastic_t), intent(in) :: self
+      real(dp), intent(out) :: tangent(6, 6)  !! D
+      tangent = hooke_tangent(self%young, self%poisson)
+   end subroutine linear_elastic_elastic_tangent
+end module frix_linear_elastic

@@ -1,0 +1,60 @@
+!> The material interface. A material maps a strain measure to its work-conjugate stress and
+!> the consistent tangent, carrying history per integration point.
+!>
+!> Voigt convention used everywhere in frix (strain, stress, tangent):
+!>   index 1..6 = xx, yy, zz, xy, xz, yz; strains carry engineering shears
+!>   (gamma_xy = 2 eps_xy), stresses carry tensor shears.
+!> Under small strain the strain is the linearised strain eps and the stress the Cauchy
+!> stress; under total Lagrangian kinematics the strain is the Green-Lagrange strain E and
+!> the stress the second Piola-Kirchhoff stress S. In both cases tangent = d stress / d strain.
+module frix_material
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   implicit none
+   private
+
+   public :: material_t, material_slot_t
+
+   type, abstract :: material_t
+      character(len=:), allocatable :: name   !! deck keyword of the law, e.g. MAT_Struct_StVenantKirchhoff
+      real(dp) :: density = 0.0_dp            !! mass per unit reference volume (body force rho g)
+   contains
+      !> Number of history variables per integration point (0 for elasticity).
+      procedure(n_state_interface), deferred :: n_state
+      !> Stress and consistent tangent for a strain, given the history at the start of the
+      !> increment (`state_old`); writes the updated history to `state_new`.
+      procedure(response_interface), deferred :: response
+      !> Small-strain elastic modulus tensor (for initial stiffness and error estimates).
+      procedure(elastic_tangent_interface), deferred :: elastic_tangent
+   end type material_t
+
+   !> Holder so that materials of different classes can live in one array.
+   type :: material_slot_t
+      class(material_t), allocatable :: law
+   end type material_slot_t
+
+   abstract interface
+      pure function n_state_interface(self) result(n)
+         import :: material_t
+         class(material_t), intent(in) :: self
+         integer :: n
+      end function n_state_interface
+
+      subroutine response_interface(self, strain, state_old, state_new, stress, tangent, error)
+         import :: material_t, dp, error_t
+         class(material_t), intent(in) :: self
+         real(dp), intent(in) :: strain(6)        !! eps (small strain) or E (Green-Lagrange), Voigt
+         real(dp), intent(in) :: state_old(:)     !! history at the start of the increment
+         real(dp), intent(inout) :: state_new(:)  !! history at the end (written)
+         real(dp), intent(out) :: stress(6)       !! sigma (small strain) or S (2nd Piola-Kirchhoff)
+         real(dp), intent(out) :: tangent(6, 6)   !! d stress / d strain, consistent
+         type(error_t), allocatable, intent(out) :: error  !! e.g. det(C) <= 0
+      end subroutine response_interface
+
+      pure subroutine elastic_tangent_interface(self, tangent)
+         import :: material_t, dp
+         class(material_t), intent(in) :: self
+         real(dp), intent(out) :: tangent(6, 6)
+      end subroutine elastic_tangent_interface
+   end interface
+end module frix_material

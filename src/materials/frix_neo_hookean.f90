@@ -1,0 +1,140 @@
+!> Compressible neo-Hookean hyperelasticity (Simo & Hughes, Computational Inelasticity, 1998,
+!> sec. 9.2; Bonet & Wood, Nonlinear Continuum Mechanics for FEA, 2nd ed., sec. 6.4.3):
+!>
+!>   W(C) = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2,   I1 = tr C,  J = sqrt(det C),
+!>   S    = 2 dW/dC = mu (I - C^-1) + lambda ln J C^-1,
+!>   C_ijkl = 4 d2W/dC_ij dC_kl = lambda C^-1_ij C^-1_kl + 2 (mu - lambda ln J) I_ijkl(C^-1),
+!>   I_ijkl(C^-1) = (C^-1_ik C^-1_jl + C^-1_il C^-1_jk) / 2,
+!>
+!> with C = I + 2 E the right Cauchy-Green tensor. lambda and mu are the Lame parameters of
+!> the small-strain E and nu, so the law reduces to Hooke's at E -> 0.
+!>
+!> Voigt (frix_material): the input E carries engineering shears, so C_12 = 2 E_12 = gamma_12;
+!> S carries tensor shears. Since S is symmetric and C_ijkl has minor symmetries,
+!> dS_ij / dgamma_kl = C_ijkl for k /= l as well, so the 6 x 6 tangent is C_ijkl with the
+!> Voigt index map (11 22 33 12 13 23) and no factors of 2.
+!> Under small strain kinematics the strain eps is used as if it were E (only meaningful in
+!> the small-strain limit, where the law is Hooke's).
+module frix_neo_hookean
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_material, only: material_t
+   use frix_linear_elastic, only: lame_parameters, hooke_tangent
+   implicit none
+   private
+
+   public :: neo_hookean_t, new_neo_hookean
+
+   !> Row i and column j of the symmetric 3 x 3 tensor behind Voigt index 1..6.
+   integer, parameter :: voigt_row(6) = [1, 2, 3, 1, 1, 2]
+   integer, parameter :: voigt_column(6) = [1, 2, 3, 2, 3, 3]
+
+   !> Compressible neo-Hookean material; no history.
+   type, extends(material_t) :: neo_hookean_t
+      real(dp) :: young = 0.0_dp    !! small-strain Young's modulus E (stress unit)
+      real(dp) :: poisson = 0.0_dp  !! small-strain Poisson's ratio nu
+      real(dp) :: lambda = 0.0_dp   !! first Lame parameter (stress unit)
+      real(dp) :: mu = 0.0_dp       !! shear modulus (stress unit)
+   contains
+      procedure :: n_state => neo_hookean_n_state
+      procedure :: response => neo_hookean_response
+      procedure :: elastic_tangent => neo_hookean_elastic_tangent
+   end type neo_hookean_t
+
+contains
+
+   !> Neo-Hookean material named by the deck keyword MAT_Struct_NeoHooke.
+   pure function new_neo_hookean(young, poisson, density) result(material)
+      real(dp), intent(in) :: young    !! small-strain Young's modulus E (stress unit), > 0
+      real(dp), intent(in) :: poisson  !! small-strain Poisson's ratio nu, in (-1, 0.5)
+      real(dp), intent(in) :: density  !! mass per unit reference volume, >= 0
+      type(neo_hookean_t) :: material
+      material%name = 'MAT_Struct_NeoHooke'
+      material%young = young
+      material%poisson = poisson
+      material%density = density
+      call lame_parameters(young, poisson, material%lambda, material%mu)
+   end function new_neo_hookean
+
+   pure function neo_hookean_n_state(self) result(n)
+      class(neo_hookean_t), intent(in) :: self
+      integer :: n
+      n = 0
+   end function neo_hookean_n_state
+
+   !> Second Piola-Kirchhoff stress and tangent dS/dE for a Green-Lagrange strain E.
+   !> Fails if det C <= 0 (inverted or degenerate deformation).
+   subroutine neo_hookean_response(self, strain, state_old, state_new, stress, tangent, error)
+      class(neo_hookean_t), intent(in) :: self
+      real(dp), intent(in) :: strain(6)        !! Green-Lagrange E, Voigt, engineering shears
+      real(dp), intent(in) :: state_old(:)     !! unused (no history)
+      real(dp), intent(inout) :: state_new(:)  !! unused (no history)
+      real(dp), intent(out) :: stress(6)       !! S, Voigt, tensor shears
+      real(dp), intent(out) :: tangent(6, 6)   !! dS/dE, Voigt
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: right_cauchy_green(3, 3), inverse(3, 3), det_c, log_j
+      integer :: a, b, i, j, k, l
+
+      stress = 0.0_dp
+      tangent = 0.0_dp
+      do a = 1, 3
+         right_cauchy_green(a, a) = 1.0_dp + 2.0_dp*strain(a)
+      end do
+      do a = 4, 6
+         i = voigt_row(a)
+         j = voigt_column(a)
+         right_cauchy_green(i, j) = strain(a)  ! C_ij = 2 E_ij = gamma_ij
+         right_cauchy_green(j, i) = strain(a)
+      end do
+
+      call symmetric_inverse(right_cauchy_green, inverse, det_c)
+      if (.not. (det_c > 0.0_dp)) then
+         call fatal_error(error, self%name//': det C = '//to_string(det_c)// &
+                          ' <= 0 (inverted or degenerate deformation)')
+         return
+      end if
+      log_j = 0.5_dp*log(det_c)
+
+      do a = 1, 6
+         i = voigt_row(a)
+         j = voigt_column(a)
+         stress(a) = self%mu*(merge(1.0_dp, 0.0_dp, i == j) - inverse(i, j)) &
+                     + self%lambda*log_j*inverse(i, j)
+         do b = 1, 6
+            k = voigt_row(b)
+            l = voigt_column(b)
+            tangent(a, b) = self%lambda*inverse(i, j)*inverse(k, l) &
+                            + (self%mu - self%lambda*log_j) &
+                            *(inverse(i, k)*inverse(j, l) + inverse(i, l)*inverse(j, k))
+         end do
+      end do
+   end subroutine neo_hookean_response
+
+   !> Tangent at E = 0: Hooke's matrix of the same E and nu.
+   pure subroutine neo_hookean_elastic_tangent(self, tangent)
+      class(neo_hookean_t), intent(in) :: self
+      real(dp), intent(out) :: tangent(6, 6)
+      tangent = hooke_tangent(self%young, self%poisson)
+   end subroutine neo_hookean_elastic_tangent
+
+   !> Inverse of a symmetric 3 x 3 matrix by cofactors, and its determinant. When the
+   !> determinant is zero the inverse is left as the (unscaled) adjugate.
+   pure subroutine symmetric_inverse(matrix, inverse, determinant)
+      real(dp), intent(in) :: matrix(3, 3)
+      real(dp), intent(out) :: inverse(3, 3)
+      real(dp), intent(out) :: determinant
+      inverse(1, 1) = matrix(2, 2)*matrix(3, 3) - matrix(2, 3)*matrix(3, 2)
+      inverse(1, 2) = matrix(1, 3)*matrix(3, 2) - matrix(1, 2)*matrix(3, 3)
+      inverse(1, 3) = matrix(1, 2)*matrix(2, 3) - matrix(1, 3)*matrix(2, 2)
+      inverse(2, 2) = matrix(1, 1)*matrix(3, 3) - matrix(1, 3)*matrix(3, 1)
+      inverse(2, 3) = matrix(1, 3)*matrix(2, 1) - matrix(1, 1)*matrix(2, 3)
+      inverse(3, 3) = matrix(1, 1)*matrix(2, 2) - matrix(1, 2)*matrix(2, 1)
+      inverse(2, 1) = inverse(1, 2)
+      inverse(3, 1) = inverse(1, 3)
+      inverse(3, 2) = inverse(2, 3)
+      determinant = matrix(1, 1)*inverse(1, 1) + matrix(1, 2)*inverse(2, 1) &
+                    + matrix(1, 3)*inverse(3, 1)
+      if (determinant /= 0.0_dp) inverse = inverse/determinant
+   end subroutine symmetric_inverse
+end module frix_neo_hookean

@@ -1,0 +1,11 @@
+!> Unit tests of the element library (frix_elements).
+program test_elements
+   use frix_testing, only: run_suites, new_testsuite
+   use test_hex8, only: collect_hex8
+   use test_element_registry, only: collect_element_registry
+   use test_surface_load, only: collect_surface_load
+   implicit none
+   call run_suites([new_testsuite('hex8', collect_hex8), &
+                    new_testsuite('element_registry', collect_element_registry), &
+                    new_testsuite('surface_load', collect_surface_load)])
+end program test_elements

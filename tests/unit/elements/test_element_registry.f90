@@ -1,0 +1,92 @@
+!> Unit tests of frix_element_registry: shape keywords, EAS counts, the HEXA8-E3 alias and
+!> the error messages.
+module test_element_registry
+   use frix_error, only: error_t
+   use frix_testing, only: unittest_t, new_unittest, check, check_message_contains
+   use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
+   use frix_element_registry, only: create_element
+   implicit none
+   private
+
+   public :: collect_element_registry
+
+contains
+
+   subroutine collect_element_registry(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [ &
+              new_unittest('HEX8 with every EAS count', test_hex8_counts), &
+              new_unittest('HEXA8-E3 is HEX8-EAS3', test_hexa8_e3), &
+              new_unittest('unknown shape is an error', test_unknown_shape), &
+              new_unittest('bad EAS count is an error', test_bad_count), &
+              new_unittest('HEXA8-E3 with another EAS count is an error', test_hexa8_e3_conflict), &
+              new_unittest('unknown kinematics is an error', test_bad_kinematics) &
+              ]
+   end subroutine collect_element_registry
+
+   subroutine test_hex8_counts(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: counts(5) = [0, 3, 9, 21, 30]
+      character(len=*), parameter :: names(5) = [character(len=10) :: 'HEX8', 'HEX8-EAS3', 'HEX8-EAS9', &
+                                                 'HEX8-EAS21', 'HEX8-EAS30']
+      class(element_t), allocatable :: element
+      integer :: i
+      do i = 1, size(counts)
+         call create_element('hex8', counts(i), kinematics_total_lagrangian, element, error)
+         if (allocated(error)) return
+         call check(error, element%n_enhanced() == counts(i) .and. element%name == trim(names(i)) .and. &
+                    element%n_nodes() == 8 .and. element%kinematics == kinematics_total_lagrangian, &
+                    'HEX8 with EAS count '//trim(names(i))//' gave '//element%name)
+         if (allocated(error)) return
+      end do
+   end subroutine test_hex8_counts
+
+   subroutine test_hexa8_e3(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(element_t), allocatable :: element
+      call create_element('Hexa8-E3', 0, kinematics_linear, element, error)
+      if (allocated(error)) return
+      call check(error, element%n_enhanced() == 3 .and. element%name == 'HEX8-EAS3', &
+                 'Hexa8-E3 gave '//element%name)
+      if (allocated(error)) return
+      call create_element('HEXA8-E3', 3, kinematics_linear, element, error)
+      if (allocated(error)) return
+      call check(error, element%n_enhanced() == 3, 'HEXA8-E3 with n_eas 3')
+   end subroutine test_hexa8_e3
+
+   subroutine test_unknown_shape(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: create_error
+      class(element_t), allocatable :: element
+      call create_element('TET4', 0, kinematics_linear, element, create_error)
+      call check_message_contains(error, create_error, 'unknown element shape "TET4"')
+      if (allocated(error)) return
+      call check_message_contains(error, create_error, 'HEX8, HEXA8-E3')
+   end subroutine test_unknown_shape
+
+   subroutine test_bad_count(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: create_error
+      class(element_t), allocatable :: element
+      call create_element('HEX8', 7, kinematics_linear, element, create_error)
+      call check_message_contains(error, create_error, 'unsupported number of EAS parameters 7')
+      if (allocated(error)) return
+      call check_message_contains(error, create_error, '0, 3, 9, 21, 30')
+   end subroutine test_bad_count
+
+   subroutine test_hexa8_e3_conflict(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: create_error
+      class(element_t), allocatable :: element
+      call create_element('HEXA8-E3', 9, kinematics_linear, element, create_error)
+      call check_message_contains(error, create_error, 'conflicts with the EAS count 9')
+   end subroutine test_hexa8_e3_conflict
+
+   subroutine test_bad_kinematics(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: create_error
+      class(element_t), allocatable :: element
+      call create_element('HEX8', 0, 7, element, create_error)
+      call check_message_contains(error, create_error, 'unknown kinematics')
+   end subroutine test_bad_kinematics
+end module test_element_registry

@@ -1,0 +1,207 @@
+!> Pressure load kernel of a bilinear quadrilateral face (frix_surface_load). Reference values:
+!>   - total force of a pressure p on a face = -p (vector area), with the vector area of a
+!>     bilinear face exactly (d1 x d2)/2 of its diagonals d1 = x3 - x1, d2 = x4 - x2;
+!>   - on a unit square each node carries a quarter (symmetry);
+!>   - tributary areas of a trapezoid worked out by hand (see test_trapezoid_weights);
+!>   - the follower load stiffness against a central difference of the force; the force is
+!>     quadratic in u, so the central difference has no truncation error, only round-off.
+module test_surface_load
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_strings, only: to_string
+   use frix_testing, only: unittest_t, new_unittest, check, check_close
+   use frix_surface_load, only: pressure_load, face_area_weights
+   implicit none
+   private
+
+   public :: collect_surface_load
+
+   !> Unit square in z = 0, counter-clockwise seen from +z: outward normal +z.
+   real(dp), parameter :: unit_square(3, 4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, &
+                                                        1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp], [3, 4])
+   !> A warped, skewed face (no two edges parallel, nodes not coplanar).
+   real(dp), parameter :: warped_face(3, 4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 2.1_dp, 0.2_dp, 0.3_dp, &
+                                                        1.8_dp, 1.7_dp, -0.2_dp, -0.3_dp, 1.2_dp, 0.4_dp], [3, 4])
+   !> A displacement of the warped face of the order of 20 % of its size.
+   real(dp), parameter :: warped_displacement(3, 4) = reshape([0.1_dp, -0.2_dp, 0.05_dp, 0.3_dp, 0.1_dp, -0.25_dp, &
+                                                                -0.15_dp, 0.2_dp, 0.35_dp, 0.05_dp, -0.1_dp, 0.2_dp], &
+                                                               [3, 4])
+
+contains
+
+   subroutine collect_surface_load(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('unit square, p = 1: a quarter of -n area per node', test_unit_square), &
+               new_unittest('warped face, dead load: total = -p (d1 x d2)/2', test_warped_dead), &
+               new_unittest('warped face, follower: total on the current face', test_warped_follower), &
+               new_unittest('dead load ignores u and has no stiffness', test_dead_independent_of_u), &
+               new_unittest('follower stiffness vs central differences', test_follower_tangent), &
+               new_unittest('area weights of a unit square and a rectangle', test_rectangle_weights), &
+               new_unittest('area weights of a trapezoid (by hand)', test_trapezoid_weights), &
+               new_unittest('plane face: nodal force = -p n weight', test_plane_force_matches_weights)]
+   end subroutine collect_surface_load
+
+   subroutine test_unit_square(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: force(12), tangent(12, 12), expected(3)
+      logical :: follower
+      integer :: a, i, k
+      expected = [0.0_dp, 0.0_dp, -0.25_dp]
+      do k = 1, 2
+         follower = k == 2
+         call pressure_load(unit_square, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), 1.0_dp, follower, force, tangent)
+         do a = 1, 4
+            do i = 1, 3
+               call check_close(error, force(3*(a - 1) + i), expected(i), 1.0e-14_dp, 1.0e-15_dp, &
+                                'node '//to_string(a)//' direction '//to_string(i))
+               if (allocated(error)) return
+            end do
+         end do
+      end do
+   end subroutine test_unit_square
+
+   subroutine test_warped_dead(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: pressure = 2.5_dp
+      real(dp) :: force(12), tangent(12, 12)
+      call pressure_load(warped_face, warped_displacement, pressure, .false., force, tangent)
+      call check_total(error, force, -pressure*half_diagonal_cross(warped_face))
+   end subroutine test_warped_dead
+
+   subroutine test_warped_follower(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: pressure = -1.7_dp  ! suction: sign must carry through
+      real(dp) :: force(12), tangent(12, 12)
+      call pressure_load(warped_face, warped_displacement, pressure, .true., force, tangent)
+      call check_total(error, force, -pressure*half_diagonal_cross(warped_face + warped_displacement))
+   end subroutine test_warped_follower
+
+   subroutine test_dead_independent_of_u(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: force(12), force_zero(12), tangent(12, 12)
+      integer :: i
+      call pressure_load(warped_face, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), 3.0_dp, .false., force_zero)
+      call pressure_load(warped_face, warped_displacement, 3.0_dp, .false., force, tangent)
+      do i = 1, 12
+         call check_close(error, force(i), force_zero(i), 0.0_dp, message='force entry '//to_string(i))
+         if (allocated(error)) return
+      end do
+      call check(error, all(tangent == 0.0_dp), 'dead load stiffness must be zero')
+   end subroutine test_dead_independent_of_u
+
+   !> Column j of d fext/du vs (f(u + h e_j) - f(u - h e_j)) / (2 h), h = 1e-6 (face size ~2).
+   subroutine test_follower_tangent(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: pressure = 4.0_dp, step = 1.0e-6_dp
+      real(dp) :: force(12), tangent(12, 12), differences(12, 12), plus(12), minus(12)
+      real(dp) :: perturbed(3, 4), scale
+      integer :: i, j, a, direction
+      call pressure_load(warped_face, warped_displacement, pressure, .true., force, tangent)
+      do j = 1, 12
+         a = (j - 1)/3 + 1
+         direction = j - 3*(a - 1)
+         perturbed = warped_displacement
+         perturbed(direction, a) = warped_displacement(direction, a) + step
+         call pressure_load(warped_face, perturbed, pressure, .true., plus)
+         perturbed(direction, a) = warped_displacement(direction, a) - step
+         call pressure_load(warped_face, perturbed, pressure, .true., minus)
+         differences(:, j) = (plus - minus)/(2.0_dp*step)
+      end do
+      scale = maxval(abs(differences))
+      call check(error, maxval(abs(tangent - transpose(tangent))) > 1.0e-3_dp*scale, &
+                 'load stiffness of a warped face should be unsymmetric')
+      if (allocated(error)) return
+      do j = 1, 12
+         do i = 1, 12
+            call check_close(error, tangent(i, j), differences(i, j), 1.0e-6_dp, 1.0e-6_dp*scale, &
+                             'K_load('//to_string(i)//','//to_string(j)//')')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_follower_tangent
+
+   subroutine test_rectangle_weights(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: weights(4), rectangle(3, 4)
+      integer :: a
+      call face_area_weights(unit_square, weights)
+      do a = 1, 4
+         call check_close(error, weights(a), 0.25_dp, 1.0e-14_dp, message='unit square weight')
+         if (allocated(error)) return
+      end do
+      rectangle = unit_square
+      rectangle(1, :) = 2.0_dp*rectangle(1, :)
+      rectangle(2, :) = 3.0_dp*rectangle(2, :)
+      call face_area_weights(rectangle, weights)
+      do a = 1, 4
+         call check_close(error, weights(a), 1.5_dp, 1.0e-14_dp, message='2 x 3 rectangle weight')
+         if (allocated(error)) return
+      end do
+   end subroutine test_rectangle_weights
+
+   !> Trapezoid (0,0), (4,0), (3,2), (1,2) in a tilted plane: in its plane the width is 3 - eta
+   !> and the height 2, so dA = (3 - eta)/2 dxi deta and
+   !>   w1 = w2 = (1/8) int (1 - xi) dxi int (1 - eta)(3 - eta) deta = (1/8)(2)(20/3) = 5/3,
+   !>   w3 = w4 = (1/8)(2) int (1 + eta)(3 - eta) deta = (1/8)(2)(16/3) = 4/3; sum 6 = area.
+   !> The plane is rotated by 30 degrees about x (a rotation preserves areas).
+   subroutine test_trapezoid_weights(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: trapezoid(3, 4), weights(4), expected(4), rotation(3, 3), angle
+      integer :: a
+      angle = acos(-1.0_dp)/6.0_dp
+      rotation = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, cos(angle), sin(angle), &
+                          0.0_dp, -sin(angle), cos(angle)], [3, 3])
+      trapezoid = reshape([0.0_dp, 0.0_dp, 0.0_dp, 4.0_dp, 0.0_dp, 0.0_dp, &
+                           3.0_dp, 2.0_dp, 0.0_dp, 1.0_dp, 2.0_dp, 0.0_dp], [3, 4])
+      trapezoid = matmul(rotation, trapezoid)
+      expected = [5.0_dp/3.0_dp, 5.0_dp/3.0_dp, 4.0_dp/3.0_dp, 4.0_dp/3.0_dp]
+      call face_area_weights(trapezoid, weights)
+      do a = 1, 4
+         call check_close(error, weights(a), expected(a), 1.0e-14_dp, message='weight '//to_string(a))
+         if (allocated(error)) return
+      end do
+   end subroutine test_trapezoid_weights
+
+   !> On a plane face n is constant, so f_a = -p n integral N_a dA = -p n w_a.
+   subroutine test_plane_force_matches_weights(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: pressure = 7.0_dp
+      real(dp) :: face(3, 4), weights(4), force(12), normal(3)
+      integer :: a, i
+      face = reshape([0.0_dp, 0.0_dp, 1.0_dp, 3.0_dp, 0.5_dp, 1.0_dp, &
+                      2.5_dp, 2.0_dp, 1.0_dp, 0.4_dp, 1.5_dp, 1.0_dp], [3, 4])
+      normal = [0.0_dp, 0.0_dp, 1.0_dp]  ! counter-clockwise seen from +z
+      call face_area_weights(face, weights)
+      call pressure_load(face, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), pressure, .false., force)
+      do a = 1, 4
+         do i = 1, 3
+            call check_close(error, force(3*(a - 1) + i), -pressure*normal(i)*weights(a), 1.0e-14_dp, &
+                             1.0e-14_dp*pressure*maxval(weights), 'node '//to_string(a))
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_plane_force_matches_weights
+
+   !> Sum of the nodal forces against an expected total, relative to its size.
+   subroutine check_total(error, force, expected)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in) :: force(12), expected(3)
+      real(dp) :: total(3)
+      integer :: i
+      total = sum(reshape(force, [3, 4]), dim=2)
+      do i = 1, 3
+         call check_close(error, total(i), expected(i), 1.0e-13_dp, 1.0e-13_dp*norm2(expected), &
+                          'total force direction '//to_string(i))
+         if (allocated(error)) return
+      end do
+   end subroutine check_total
+
+   !> (d1 x d2)/2 with d1 = x3 - x1, d2 = x4 - x2: the vector area of a bilinear face.
+   pure function half_diagonal_cross(x) result(area)
+      real(dp), intent(in) :: x(3, 4)
+      real(dp) :: area(3), d1(3), d2(3)
+      d1 = x(:, 3) - x(:, 1)
+      d2 = x(:, 4) - x(:, 2)
+      area = 0.5_dp*[d1(2)*d2(3) - d1(3)*d2(2), d1(3)*d2(1) - d1(1)*d2(3), d1(1)*d2(2) - d1(2)*d2(1)]
+   end function half_diagonal_cross
+end module test_surface_load

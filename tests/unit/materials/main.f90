@@ -1,0 +1,13 @@
+!> Unit tests of the material library (frix_materials).
+program test_materials
+   use frix_testing, only: run_suites, new_testsuite
+   use test_linear_elastic, only: collect_linear_elastic
+   use test_saint_venant_kirchhoff, only: collect_saint_venant_kirchhoff
+   use test_neo_hookean, only: collect_neo_hookean
+   use test_material_registry, only: collect_material_registry
+   implicit none
+   call run_suites([new_testsuite('linear_elastic', collect_linear_elastic), &
+                    new_testsuite('saint_venant_kirchhoff', collect_saint_venant_kirchhoff), &
+                    new_testsuite('neo_hookean', collect_neo_hookean), &
+                    new_testsuite('material_registry', collect_material_registry)])
+end program test_materials

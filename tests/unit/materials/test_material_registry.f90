@@ -1,0 +1,211 @@
+!> The material registry: each law is created from its deck keyword and properties, and every
+!> documented mistake is reported with a message naming the keyword or property.
+module test_material_registry
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains
+   use frix_material, only: material_t
+   use frix_linear_elastic, only: linear_elastic_t
+   use frix_saint_venant_kirchhoff, only: saint_venant_kirchhoff_t
+   use frix_neo_hookean, only: neo_hookean_t
+   use frix_material_registry, only: create_material, material_keywords, keyword_length
+   implicit none
+   private
+
+   public :: collect_material_registry
+
+   character(len=8), parameter :: standard_names(3) = [character(len=8) :: 'YOUNG', 'NUE', 'DENS']
+   real(dp), parameter :: standard_values(3) = [1000.0_dp, 0.3_dp, 20.0_dp]
+
+contains
+
+   subroutine collect_material_registry(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('creates St. Venant-Kirchhoff', test_create_saint_venant_kirchhoff), &
+               new_unittest('creates linear elastic', test_create_linear_elastic), &
+               new_unittest('creates neo-Hookean, keyword and names in any case', test_create_neo_hookean), &
+               new_unittest('every listed keyword creates its law', test_keywords_round_trip), &
+               new_unittest('DENS defaults to 0', test_default_density), &
+               new_unittest('unknown law lists the valid ones', test_unknown_law), &
+               new_unittest('plasticity not implemented yet', test_plasticity), &
+               new_unittest('missing YOUNG', test_missing_young), &
+               new_unittest('missing NUE', test_missing_poisson), &
+               new_unittest('unknown property', test_unknown_property), &
+               new_unittest('repeated property', test_repeated_property), &
+               new_unittest('YOUNG <= 0', test_bad_young), &
+               new_unittest('NUE outside (-1, 0.5)', test_bad_poisson), &
+               new_unittest('DENS < 0', test_bad_density), &
+               new_unittest('names and values of different lengths', test_length_mismatch), &
+               new_unittest('all mistakes reported at once', test_several_mistakes)]
+   end subroutine collect_material_registry
+
+   subroutine test_create_saint_venant_kirchhoff(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      call create_material('MAT_Struct_StVenantKirchhoff', standard_names, standard_values, material, error)
+      if (allocated(error)) return
+      call check(error, material%name == 'MAT_Struct_StVenantKirchhoff', 'name')
+      if (allocated(error)) return
+      call check_close(error, material%density, 20.0_dp, 0.0_dp, message='density')
+      if (allocated(error)) return
+      select type (material)
+      type is (saint_venant_kirchhoff_t)
+         call check_close(error, material%young, 1000.0_dp, 0.0_dp, message='young')
+         if (allocated(error)) return
+         call check_close(error, material%poisson, 0.3_dp, 0.0_dp, message='poisson')
+      class default
+         call check(error, .false., 'wrong dynamic type')
+      end select
+   end subroutine test_create_saint_venant_kirchhoff
+
+   subroutine test_create_linear_elastic(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      call create_material('MAT_Struct_LinearElastic', standard_names, standard_values, material, error)
+      if (allocated(error)) return
+      select type (material)
+      type is (linear_elastic_t)
+         call check_close(error, material%young, 1000.0_dp, 0.0_dp, message='young')
+      class default
+         call check(error, .false., 'wrong dynamic type')
+      end select
+   end subroutine test_create_linear_elastic
+
+   subroutine test_create_neo_hookean(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      call create_material('  mat_struct_NEOHOOKE', [character(len=5) :: 'nue', 'Young'], [0.25_dp, 500.0_dp], &
+                           material, error)
+      if (allocated(error)) return
+      call check(error, material%name == 'MAT_Struct_NeoHooke', 'name in documented spelling')
+      if (allocated(error)) return
+      select type (material)
+      type is (neo_hookean_t)
+         call check_close(error, material%young, 500.0_dp, 0.0_dp, message='young')
+         if (allocated(error)) return
+         call check_close(error, material%poisson, 0.25_dp, 0.0_dp, message='poisson')
+      class default
+         call check(error, .false., 'wrong dynamic type')
+      end select
+   end subroutine test_create_neo_hookean
+
+   subroutine test_keywords_round_trip(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      integer :: i
+      associate (keywords => material_keywords())
+         call check(error, size(keywords) == 3 .and. len(keywords) == keyword_length, 'three laws')
+         if (allocated(error)) return
+         do i = 1, size(keywords)
+            call create_material(keywords(i), standard_names, standard_values, material, error)
+            if (allocated(error)) return
+            call check(error, material%name == trim(keywords(i)), 'name of '//trim(keywords(i)))
+            if (allocated(error)) return
+         end do
+      end associate
+   end subroutine test_keywords_round_trip
+
+   subroutine test_default_density(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      call create_material('MAT_Struct_StVenantKirchhoff', standard_names(1:2), standard_values(1:2), &
+                           material, error)
+      if (allocated(error)) return
+      call check_close(error, material%density, 0.0_dp, 0.0_dp, message='density')
+   end subroutine test_default_density
+
+   !> Creates `keyword` from the given properties and checks that it fails with `fragment`
+   !> and leaves no material.
+   subroutine check_failure(error, keyword, names, values, fragment)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: keyword, names(:), fragment
+      real(dp), intent(in) :: values(:)
+      class(material_t), allocatable :: material
+      type(error_t), allocatable :: registry_error
+      call create_material(keyword, names, values, material, registry_error)
+      call check_message_contains(error, registry_error, fragment)
+      if (allocated(error)) return
+      call check(error, .not. allocated(material), 'no material on error')
+   end subroutine check_failure
+
+   subroutine test_unknown_law(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_Foo', standard_names, standard_values, &
+                         'unknown material law "MAT_Struct_Foo"')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_Struct_Foo', standard_names, standard_values, &
+                         'valid laws: MAT_Struct_LinearElastic, MAT_Struct_StVenantKirchhoff, MAT_Struct_NeoHooke')
+   end subroutine test_unknown_law
+
+   subroutine test_plasticity(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'HARD'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 0.0_dp], 'MAT_3DMisesPlastic: plasticity is not implemented')
+   end subroutine test_plasticity
+
+   subroutine test_missing_young(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_NeoHooke', standard_names(2:3), standard_values(2:3), &
+                         'MAT_Struct_NeoHooke: missing property YOUNG')
+   end subroutine test_missing_young
+
+   subroutine test_missing_poisson(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_LinearElastic', standard_names([1, 3]), standard_values([1, 3]), &
+                         'MAT_Struct_LinearElastic: missing property NUE')
+   end subroutine test_missing_poisson
+
+   subroutine test_unknown_property(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_StVenantKirchhoff', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp], &
+                         'MAT_Struct_StVenantKirchhoff: unknown property "SIGY" (valid: YOUNG, NUE, DENS)')
+   end subroutine test_unknown_property
+
+   subroutine test_repeated_property(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_StVenantKirchhoff', [character(len=5) :: 'YOUNG', 'NUE', 'young'], &
+                         [1000.0_dp, 0.3_dp, 2000.0_dp], 'property YOUNG given twice')
+   end subroutine test_repeated_property
+
+   subroutine test_bad_young(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_StVenantKirchhoff', standard_names, [0.0_dp, 0.3_dp, 0.0_dp], &
+                         'MAT_Struct_StVenantKirchhoff: YOUNG must be > 0, got 0')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_Struct_StVenantKirchhoff', standard_names, [-5.0_dp, 0.3_dp, 0.0_dp], &
+                         'YOUNG must be > 0, got -5')
+   end subroutine test_bad_young
+
+   subroutine test_bad_poisson(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_NeoHooke', standard_names, [1000.0_dp, 0.5_dp, 0.0_dp], &
+                         'MAT_Struct_NeoHooke: NUE must lie in (-1, 0.5), got 0.5')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_Struct_NeoHooke', standard_names, [1000.0_dp, -1.0_dp, 0.0_dp], &
+                         'NUE must lie in (-1, 0.5), got -1')
+   end subroutine test_bad_poisson
+
+   subroutine test_bad_density(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_LinearElastic', standard_names, [1000.0_dp, 0.3_dp, -1.0_dp], &
+                         'MAT_Struct_LinearElastic: DENS must be >= 0, got -1')
+   end subroutine test_bad_density
+
+   subroutine test_length_mismatch(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_failure(error, 'MAT_Struct_LinearElastic', standard_names, standard_values(1:2), &
+                         '3 property names but 2 values')
+   end subroutine test_length_mismatch
+
+   subroutine test_several_mistakes(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=5), parameter :: names(2) = [character(len=5) :: 'NUE', 'FOO']
+      real(dp), parameter :: values(2) = [0.7_dp, 1.0_dp]
+      call check_failure(error, 'MAT_Struct_LinearElastic', names, values, 'unknown property "FOO"')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_Struct_LinearElastic', names, values, 'missing property YOUNG')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_Struct_LinearElastic', names, values, 'NUE must lie in (-1, 0.5), got 0.7')
+   end subroutine test_several_mistakes
+end module test_material_registry
