@@ -5,6 +5,7 @@
 program frix
    use frix_error, only: error_t
    use frix_driver, only: run_options_t, run_deck
+   use frix_process, only: exit_with_status
    implicit none
    type(run_options_t) :: options
    type(error_t), allocatable :: error
@@ -13,13 +14,13 @@ program frix
    call parse_command_line(options, status)
    if (status /= 0) then
       call print_usage()
-      if (status == 1) stop
-      error stop 2
+      if (status == 1) call exit_with_status(0)
+      call exit_with_status(2)
    end if
    call run_deck(options, error)
    if (allocated(error)) then
       write (0, '(a)') error%message
-      error stop 1
+      call exit_with_status(1)
    end if
 
 contains

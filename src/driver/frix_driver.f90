@@ -18,6 +18,7 @@ module frix_driver
                                   restore_state
    use frix_newton_solver, only: newton_context_t, newton_report_t, setup_newton, solve_increment
    use frix_results_output, only: results_output_t
+   use frix_linear_solver, only: wall_clock_seconds
    implicit none
    private
 
@@ -42,7 +43,9 @@ contains
       type(newton_context_t) :: context
       type(results_output_t) :: output
       integer :: step
+      real(dp) :: start
 
+      start = wall_clock_seconds()
       call read_deck(options%deck_path, model, error)
       if (allocated(error)) return
       if (options%check_only) then
@@ -66,11 +69,49 @@ contains
       if (.not. options%quiet) then
          write (*, '(a)') 'frix: '//to_string(output%n_increments)// &
             ' converged increments; results in '//results_base(options)//'*'
-         write (*, '(a,3(f0.3,a))') 'frix: linear solver '//context%solver%name()//': analyse ', &
-            context%solver%analyse_seconds, ' s, factorize ', context%solver%factorize_seconds, &
-            ' s, solve ', context%solver%solve_seconds, ' s'
+         call print_statistics(context, wall_clock_seconds() - start)
       end if
    end subroutine run_deck
+
+   !> The closing statistics block (read by bench/ scripts: keep the `frix: stat` keys).
+   subroutine print_statistics(context, total_seconds)
+      type(newton_context_t), intent(in) :: context
+      real(dp), intent(in) :: total_seconds
+      character(len=*), parameter :: row = '(a,t40,f12.4)'
+      write (*, '(a,t40,i12)') 'frix: stat equations', context%matrix%n
+      write (*, '(a,t40,i12)') 'frix: stat matrix_nonzeros', context%matrix%nnz()
+      write (*, '(a,t40,i12)') 'frix: stat factor_nonzeros', context%solver%factor_entries
+      write (*, '(a,t40,i12)') 'frix: stat newton_iterations', context%n_iterations
+      write (*, '(a,t40,i12)') 'frix: stat assemblies', context%n_assemblies
+      write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
+      write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
+      write (*, row) 'frix: stat analyse_seconds', context%solver%analyse_seconds
+      write (*, row) 'frix: stat factorize_seconds', context%solver%factorize_seconds
+      write (*, row) 'frix: stat solve_seconds', context%solver%solve_seconds
+      write (*, row) 'frix: stat total_seconds', total_seconds
+      write (*, row) 'frix: stat peak_memory_mb', peak_resident_megabytes()
+      write (*, '(a)') 'frix: linear solver '//context%solver%name()
+   end subroutine print_statistics
+
+   !> Peak resident set size of this process (VmHWM of /proc/self/status) in MiB; 0 if unknown.
+   function peak_resident_megabytes() result(megabytes)
+      real(dp) :: megabytes
+      character(len=256) :: line
+      integer :: unit, stat, kilobytes
+      megabytes = 0.0_dp
+      open (newunit=unit, file='/proc/self/status', action='read', status='old', iostat=stat)
+      if (stat /= 0) return
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (line(1:6) == 'VmHWM:') then
+            read (line(7:), *, iostat=stat) kilobytes
+            if (stat == 0) megabytes = kilobytes/1024.0_dp
+            exit
+         end if
+      end do
+      close (unit)
+   end function peak_resident_megabytes
 
    !> March through step `step`, cutting back failed increments.
    subroutine run_step(model, step, context, state, output, quiet, error)

@@ -14,7 +14,7 @@ module frix_newton_solver
    use frix_model, only: model_t, solver_auto, solver_cholmod, solver_umfpack
    use frix_analysis_state, only: analysis_state_t
    use frix_sparse_matrix, only: sparse_matrix_t
-   use frix_linear_solver, only: linear_solver_t
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
@@ -33,6 +33,9 @@ module frix_newton_solver
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
       real(dp), allocatable :: reactions(:) !! fint - fext on constrained equations, 0 elsewhere
       logical :: quiet = .false.
+      real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
+      integer :: n_assemblies = 0
+      integer :: n_iterations = 0              !! Newton corrections of the whole run
    end type newton_context_t
 
    !> What happened in one increment.
@@ -95,7 +98,7 @@ contains
       type(error_t), allocatable :: inner_error
       integer :: iteration
       real(dp) :: residual_norm, reference, correction_norm, u_norm, energy
-      real(dp) :: diagonal_scale
+      real(dp) :: diagonal_scale, start
 
       state%time = time
       call prescribed_displacements(model, time, context%fixed, context%prescribed)
@@ -104,12 +107,15 @@ contains
       energy = 0.0_dp
 
       do iteration = 0, min(max_iterations, ubound(report%residual_norms, 1))
+         start = wall_clock_seconds()
          call assemble_internal(model, state, context%fint, inner_error, matrix=context%matrix)
          if (allocated(inner_error)) then
             report%failure = inner_error%message
             return
          end if
          call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
+         context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
+         context%n_assemblies = context%n_assemblies + 1
          context%residual = context%fext - context%fint
          where (context%fixed)
             context%reactions = -context%residual
@@ -165,6 +171,7 @@ contains
          energy = abs(dot_product(context%correction, context%residual))
          correction_norm = norm2(context%correction)
          state%u = state%u + context%correction
+         context%n_iterations = context%n_iterations + 1
       end do
    end subroutine solve_increment
 
