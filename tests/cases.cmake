@@ -15,3 +15,27 @@ endforeach()
 add_test(NAME io_vtk_readback COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/vtk_readback_test.sh $<TARGET_FILE:test_io>)
 add_test(NAME compare_selftest COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/compare_selftest.sh)
 set_tests_properties(io_vtk_readback compare_selftest PROPERTIES LABELS unit)
+
+# Verification problems (V1 patch tests, V2 Cook's membrane, V3 large deflection, ...).
+include(${CMAKE_CURRENT_SOURCE_DIR}/verification/verification.cmake OPTIONAL)
+
+# Driver behaviour on models that cannot be solved (tests/solver/check_run.sh).
+set(check_run ${CMAKE_CURRENT_SOURCE_DIR}/solver/check_run.sh)
+add_test(NAME solver_unsupported_direction
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/unsupported_direction.dck 1
+                 "has no Dirichlet condition in direction y")
+add_test(NAME solver_rotation_mode
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/rotation_mode.dck 1
+                 "the stiffness matrix is singular at node")
+# Limit point at t = 0.7698: cut-backs, a failure message, and the converged increments kept.
+add_test(NAME solver_limit_point_cutback
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck 1
+                 "at the smallest increment allowed"
+                 limit_point_cutback.pvd limit_point_cutback_0001_0009.vtu
+                 limit_point_cutback_history.csv limit_point_cutback_listing.txt)
+set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
+                     PROPERTIES LABELS regression)
+add_test(NAME solver_limit_point_values
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_check.sh ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck)
+set_tests_properties(solver_limit_point_values PROPERTIES LABELS regression)

@@ -93,6 +93,8 @@ module frix_model
    type :: results_request_t
       logical :: vtk = .true.
       logical :: listing = .true.
+      logical :: pos3d = .false.          !! Tecgraf neutral file <base>.pos
+      logical :: hdf5 = .false.           !! <base>.h5: results and restart data
       integer :: every = 1                !! write every n-th converged increment (and the last)
       type(history_request_t), allocatable :: history(:)
    end type results_request_t

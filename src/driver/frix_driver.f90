@@ -1,13 +1,13 @@
 !> Top level of a run: read the deck, set up the analysis, march through the steps with
 !> automatic cut-back, and write the results of every converged increment.
 !>
-!> Increment control: step s runs from t = s-1 to t = s in NUMSTEP equal increments. An
-!> increment that fails (no convergence within MAXITER, diverging residual, an element
-!> turned inside out) is retried with half the size, at most MAXCUT times in a row. After a
-!> cut, the size grows back by a factor 1.5 (never beyond the nominal one) after every
-!> increment that converged in at most a third of MAXITER iterations. When an increment fails
-!> MAXCUT times, the run stops with a message and a non-zero exit; the results of every
-!> converged increment are already on disk.
+!> Increment control: step s runs from t = s-1 to t = s in NUMSTEP equal increments of size
+!> dt = 1/NUMSTEP. An increment that fails (no convergence within MAXITER, diverging residual,
+!> an element turned inside out) is retried with half the size, down to the smallest size
+!> dt / 2^MAXCUT. After a cut, the size grows back by a factor 1.5 (never beyond dt) after
+!> every increment that converged in at most a third of MAXITER iterations. When an increment
+!> of the smallest size fails, the run stops with a message and a non-zero exit; the results
+!> of every converged increment are already on disk.
 module frix_driver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -19,6 +19,8 @@ module frix_driver
    use frix_newton_solver, only: newton_context_t, newton_report_t, setup_newton, solve_increment
    use frix_results_output, only: results_output_t
    use frix_linear_solver, only: wall_clock_seconds
+   use frix_external_loads, only: prescribed_displacements
+   use frix_support_check, only: check_rigid_body_support
    implicit none
    private
 
@@ -55,6 +57,9 @@ contains
 
       call create_analysis_state(model, state)
       call setup_newton(model, context, error)
+      if (allocated(error)) return
+      call prescribed_displacements(model, 0.0_dp, context%fixed, context%prescribed)
+      call check_rigid_body_support(model, context%fixed, error)
       if (allocated(error)) return
       context%quiet = options%quiet
       call output%open(model, results_base(options), error)
@@ -124,7 +129,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(newton_report_t) :: report
       real(dp) :: step_end, nominal, size_now, target_time
-      integer :: increment, cutbacks, max_iterations
+      integer :: increment, max_iterations
+      real(dp) :: smallest
       character(len=64) :: label
 
       step_end = real(step, dp)
@@ -132,8 +138,8 @@ contains
       max_iterations = model%steps(step)%max_iterations
       if (max_iterations <= 0) max_iterations = model%controls%max_iterations
       size_now = nominal
+      smallest = nominal*0.5_dp**model%controls%max_cutbacks
       increment = 0
-      cutbacks = 0
       do while (state%committed_time < step_end - 1.0e-12_dp)
          target_time = min(state%committed_time + size_now, step_end)
          if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
@@ -146,27 +152,35 @@ contains
             call commit_state(state)
             call output%write_increment(model, step, increment, state, context, report, error)
             if (allocated(error)) return
-            cutbacks = 0
             if (size_now < nominal .and. report%iterations <= max_iterations/3) &
                size_now = min(nominal, growth_factor*size_now)
          else
             call restore_state(state)
-            cutbacks = cutbacks + 1
-            if (cutbacks > model%controls%max_cutbacks) then
+            if (size_now <= smallest*(1.0_dp + 1.0e-9_dp)) then
                call fatal_error(error, 'frix: step '//to_string(step)//': the increment from t = '// &
-                                to_string(state%committed_time)//' to t = '//to_string(target_time)// &
-                                ' failed ('//report%failure//') after '// &
-                                to_string(model%controls%max_cutbacks)//' cut-backs; the results of the '// &
+                                time_text(state%committed_time)//' to t = '//time_text(target_time)// &
+                                ' failed ('//report%failure//') at the smallest increment allowed ('// &
+                                to_string(model%controls%max_cutbacks)//' cut-backs of '// &
+                                time_text(nominal)//'); the results of the '// &
                                 to_string(output%n_increments)//' converged increments up to t = '// &
-                                to_string(state%committed_time)//' are written')
+                                time_text(state%committed_time)//' are written')
                return
             end if
-            size_now = 0.5_dp*size_now
+            size_now = max(smallest, 0.5_dp*size_now)
             if (.not. quiet) write (*, '(2x,a)') 'cut-back: '//report%failure//'; new increment size '// &
-               to_string(size_now)
+               time_text(size_now)
          end if
       end do
    end subroutine run_step
+
+   !> A pseudo time with 10 significant digits.
+   pure function time_text(time) result(text)
+      real(dp), intent(in) :: time
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(es17.10)') time
+      text = trim(adjustl(buffer))
+   end function time_text
 
    !> Path prefix of every result file: <output directory>/<deck name without extension>.
    function results_base(options) result(base)

@@ -158,7 +158,7 @@ contains
 
          diagonal_scale = mean_absolute_diagonal(context%matrix)
          call context%matrix%apply_dirichlet(context%fixed, diagonal_scale)
-         call factorize_and_solve(context, inner_error)
+         call factorize_and_solve(model, context, inner_error)
          if (allocated(inner_error)) then
             if (iteration == 0) then
                call move_alloc(inner_error, error)
@@ -177,7 +177,8 @@ contains
 
    !> Factorize and solve K du = r. A CHOLMOD failure (matrix not positive definite, as
    !> past a limit point) is retried once with UMFPACK, which is then kept.
-   subroutine factorize_and_solve(context, error)
+   subroutine factorize_and_solve(model, context, error)
+      type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(error_t), allocatable, intent(out) :: error
       call context%solver%factorize(context%matrix, error)
@@ -190,14 +191,15 @@ contains
          call context%solver%factorize(context%matrix, error)
       end if
       if (allocated(error)) then
-         call describe_singularity(context, error)
+         call describe_singularity(model, context, error)
          return
       end if
       call context%solver%solve(context%matrix, context%residual, context%correction, error)
    end subroutine factorize_and_solve
 
    !> Name the node and direction where the factorization broke down.
-   subroutine describe_singularity(context, error)
+   subroutine describe_singularity(model, context, error)
+      type(model_t), intent(in) :: model
       type(newton_context_t), intent(in) :: context
       type(error_t), allocatable, intent(inout) :: error
       integer :: equation
@@ -205,8 +207,8 @@ contains
       equation = context%solver%failed_equation
       if (equation <= 0) return
       error%message = error%message//new_line('a')// &
-                      '  the stiffness matrix is singular at internal node '// &
-                      to_string((equation - 1)/3 + 1)//', direction '// &
+                      model%deck_path//': the stiffness matrix is singular at node '// &
+                      to_string(model%mesh%node_ids((equation - 1)/3 + 1))//', direction '// &
                       direction(mod(equation - 1, 3) + 1)// &
                       ': is that part of the model held against rigid-body motion?'
    end subroutine describe_singularity

@@ -518,6 +518,12 @@ contains
                case ('LISTING')
                   position = position + 1
                   call reader%take_yes_no(line, position, 'LISTING', model%results%listing, ok)
+               case ('POS3D')
+                  position = position + 1
+                  call reader%take_yes_no(line, position, 'POS3D', model%results%pos3d, ok)
+               case ('HDF5')
+                  position = position + 1
+                  call reader%take_yes_no(line, position, 'HDF5', model%results%hdf5, ok)
                case ('EVERY')
                   position = position + 1
                   call reader%take_integer(line, position, 'EVERY', value, ok)
@@ -553,7 +559,7 @@ contains
          end select
       case (s_results)
          select case (keyword)
-         case ('VTK', 'LISTING', 'EVERY', 'HISTORY')
+         case ('VTK', 'LISTING', 'POS3D', 'HDF5', 'EVERY', 'HISTORY')
             accepted = keyword
          end select
       end select
