@@ -39,3 +39,12 @@ add_test(NAME solver_limit_point_values
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck)
 set_tests_properties(solver_limit_point_values PROPERTIES LABELS regression)
+
+# POS3D neutral file: writer checks on synthetic data, and a run read back independently.
+add_executable(pos3d_writer_check ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_writer_check.f90)
+set_target_properties(pos3d_writer_check PROPERTIES Fortran_MODULE_DIRECTORY ${PROJECT_BINARY_DIR}/modules/pos3d_check)
+target_link_libraries(pos3d_writer_check PRIVATE frix_io)
+add_test(NAME pos3d_writer COMMAND bash ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_writer_test.sh $<TARGET_FILE:pos3d_writer_check>)
+add_test(NAME pos3d_roundtrip COMMAND bash ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_roundtrip_test.sh ${FRIX_BIN})
+set_tests_properties(pos3d_writer PROPERTIES LABELS unit)
+set_tests_properties(pos3d_roundtrip PROPERTIES LABELS regression SKIP_RETURN_CODE 77)

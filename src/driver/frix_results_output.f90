@@ -12,6 +12,7 @@ module frix_results_output
    use frix_listing_writer, only: listing_t
    use frix_vtk_writer, only: vtk_series_t
    use frix_history_writer, only: history_t
+   use frix_pos3d_writer, only: pos3d_writer_t
    implicit none
    private
 
@@ -24,7 +25,9 @@ module frix_results_output
       type(listing_t) :: listing
       type(vtk_series_t) :: vtk
       type(history_t) :: history
+      type(pos3d_writer_t) :: pos3d
       logical :: has_history = .false.
+      logical :: pos3d_open = .false.
    contains
       procedure :: open => output_open
       procedure :: write_increment => output_write_increment
@@ -55,6 +58,10 @@ contains
          call self%vtk%open(base, error)
          if (allocated(error)) return
       end if
+      if (model%results%pos3d) then
+         call open_pos3d(self, model, base, error)
+         if (allocated(error)) return
+      end if
       if (allocated(model%results%history)) then
          if (size(model%results%history) > 0) then
             associate (requests => model%results%history)
@@ -82,6 +89,8 @@ contains
       real(dp), allocatable :: displacement(:, :), reaction(:, :), norms(:, :)
       logical :: last_of_step, wanted
       integer :: n_nodes
+      character(len=1), allocatable :: no_names(:)
+      real(dp), allocatable :: no_scalars(:, :)
 
       self%n_increments = self%n_increments + 1
       n_nodes = model%mesh%n_nodes
@@ -111,15 +120,47 @@ contains
          if (allocated(error)) return
       end if
 
-      if (model%results%vtk) then
+      if (model%results%vtk .or. model%results%pos3d) then
          allocate (gp_stress(6, 8, model%mesh%n_elements), gp_strain(6, 8, model%mesh%n_elements))
          allocate (fint(3*n_nodes))
          call assemble_internal(model, state, fint, error, gp_stress=gp_stress, gp_strain=gp_strain)
          if (allocated(error)) return
+      end if
+      if (model%results%vtk) then
          call self%vtk%write_increment(model%mesh, step, increment, state%time, displacement, &
                                        reaction, gp_stress, gp_strain, error)
+         if (allocated(error)) return
+      end if
+      if (model%results%pos3d) then
+         allocate (no_names(0), no_scalars(0, n_nodes))
+         call self%pos3d%add_step(state%time, displacement, gp_stress, no_names, no_scalars, error)
+         if (allocated(error)) return
       end if
    end subroutine output_write_increment
+
+   !> `<base>.pos` with the model; the materials' E and nu are read off their small-strain
+   !> elastic tangent (C11 = lambda + 2 mu, C12 = lambda).
+   subroutine open_pos3d(self, model, base, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: base
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: elastic(:, :)
+      real(dp) :: tangent(6, 6), lambda, mu
+      integer :: m
+      allocate (elastic(2, size(model%materials)))
+      do m = 1, size(model%materials)
+         call model%materials(m)%law%elastic_tangent(tangent)
+         lambda = tangent(1, 2)
+         mu = 0.5_dp*(tangent(1, 1) - tangent(1, 2))
+         elastic(1, m) = mu*(3.0_dp*lambda + 2.0_dp*mu)/(lambda + mu)
+         elastic(2, m) = lambda/(2.0_dp*(lambda + mu))
+      end do
+      call self%pos3d%open(base//'.pos', model%title, model%mesh, error, elastic, &
+                           model%blocks(model%mesh%element_block)%material)
+      if (allocated(error)) return
+      self%pos3d_open = .true.
+   end subroutine open_pos3d
 
    subroutine output_close(self, error)
       class(results_output_t), intent(inout) :: self
@@ -127,6 +168,7 @@ contains
       type(error_t), allocatable :: close_error
       if (self%listing%is_open()) call self%listing%close(close_error)
       if (self%has_history) call self%history%close(close_error)
+      if (self%pos3d_open) call self%pos3d%close(close_error)
       if (allocated(close_error) .and. .not. allocated(error)) call move_alloc(close_error, error)
    end subroutine output_close
 end module frix_results_output
