@@ -1,0 +1,15 @@
+!> Unit tests of the contact library (frix_contact).
+program test_contact
+   use frix_testing, only: run_suites, new_testsuite
+   use test_dual_number, only: collect_dual_number
+   use test_face_projection, only: collect_face_projection
+   use test_friction_law_registry, only: collect_friction_law_registry
+   use test_contact_tangent, only: collect_contact_tangent
+   use test_contact_physics, only: collect_contact_physics
+   implicit none
+   call run_suites([new_testsuite('dual_number', collect_dual_number), &
+                    new_testsuite('face_projection', collect_face_projection), &
+                    new_testsuite('friction_law_registry', collect_friction_law_registry), &
+                    new_testsuite('contact_tangent', collect_contact_tangent), &
+                    new_testsuite('contact_physics', collect_contact_physics)])
+end program test_contact

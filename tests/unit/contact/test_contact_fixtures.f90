@@ -1,0 +1,150 @@
+!> Shared fixtures of the contact tests: faces, parameters, and the central-difference check
+!> of the contact tangents.
+module test_contact_fixtures
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_coulomb_friction, only: new_coulomb_friction
+   use frix_contact_parameters, only: contact_parameters_t
+   use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact
+   use frix_face_projection, only: face_position, face_normal
+   implicit none
+   private
+
+   public :: warped_face, flat_face, make_parameters, check_face_tangent, check_plane_tangent
+   public :: asymmetry, slave_below
+
+   !> A warped, skewed face (no two edges parallel, nodes not coplanar), counter-clockwise
+   !> seen from +z: outward normal roughly +z. Size about 2.
+   real(dp), parameter :: warped_face(3, 4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 2.1_dp, 0.2_dp, 0.3_dp, &
+                                                        1.8_dp, 1.7_dp, -0.2_dp, -0.3_dp, 1.2_dp, 0.4_dp], [3, 4])
+   !> The rectangle [0, 2] x [0, 1] in the plane z = 0, outward normal +z; xi1 = x - 1,
+   !> xi2 = 2 y - 1.
+   real(dp), parameter :: flat_face(3, 4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 2.0_dp, 0.0_dp, 0.0_dp, &
+                                                      2.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp], [3, 4])
+
+   !> Relative step of the central differences (times the face size) and the tolerance on
+   !> max |K_fd - K| relative to max |K|: the central difference error is O(h^2) ~ 1e-14 plus
+   !> round-off ~ 1e-16 |f| / h ~ 1e-9 |f|, with |f| / max|K| ~ the penetration (0.01-0.02):
+   !> about 1e-11 to 1e-10 measured (max 4e-10), hence 1e-8. A tangent missing the
+   !> closest-point derivative errs by 5e-3, one missing the anchor's motion by 1e-2 or more.
+   real(dp), parameter :: relative_step = 1.0e-7_dp
+   real(dp), parameter :: tangent_tolerance = 1.0e-8_dp
+
+contains
+
+   !> eps_N = 1e4, eps_T = 1e3 (force/area/length), Coulomb mu (0: frictionless).
+   function make_parameters(coefficient) result(parameters)
+      real(dp), intent(in) :: coefficient
+      type(contact_parameters_t) :: parameters
+      parameters%normal_penalty = 1.0e4_dp
+      parameters%tangential_penalty = 1.0e3_dp
+      parameters%gap_tolerance = 1.0e-4_dp
+      allocate (parameters%friction, source=new_coulomb_friction(coefficient))
+   end function make_parameters
+
+   !> The point at depth `depth` below the face point of coordinates xi (along -n there):
+   !> its closest point is xi (for a depth small against the curvature radius).
+   pure function slave_below(face, xi, depth) result(point)
+      real(dp), intent(in) :: face(3, 4), xi(2), depth
+      real(dp) :: point(3)
+      point = face_position(face, xi) - depth*face_normal(face, xi)
+   end function slave_below
+
+   !> max |K - K^T| / max |K|.
+   pure real(dp) function asymmetry(tangent)
+      real(dp), intent(in) :: tangent(:, :)
+      asymmetry = maxval(abs(tangent - transpose(tangent)))/maxval(abs(tangent))
+   end function asymmetry
+
+   !> Tangent of node_face_contact against central differences of fint, all 15 unknowns;
+   !> fails if the status (or the outside/clamped flags) differs from `expected_status` at the
+   !> base point or at any perturbed point (the difference must not cross a branch).
+   subroutine check_face_tangent(error, parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
+                                 expected_status, tangent)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_parameters_t), intent(in) :: parameters
+      real(dp), intent(in) :: x_slave(3), x_master(3, 4), area, anchor_xi(2)
+      logical, intent(in) :: has_anchor, clamp
+      integer, intent(in) :: expected_status
+      real(dp), intent(out) :: tangent(15, 15)
+      type(contact_point_result_t) :: base, plus, minus
+      real(dp) :: q(15), qp(15), fint(15), f_plus(15), f_minus(15), k_plus(15, 15), column(15), h, scale, worst
+      integer :: j
+
+      q(1:3) = x_slave
+      q(4:15) = reshape(x_master, [12])
+      h = relative_step*maxval(abs(x_master))
+      call node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, base, fint, tangent)
+      if (base%status /= expected_status) then
+         call fatal_error(error, 'status '//to_string(base%status)//', expected '//to_string(expected_status))
+         return
+      end if
+      scale = maxval(abs(tangent))
+      worst = 0.0_dp
+      do j = 1, 15
+         qp = q
+         qp(j) = q(j) + h
+         call node_face_contact(parameters, qp(1:3), reshape(qp(4:15), [3, 4]), area, anchor_xi, has_anchor, &
+                                clamp, plus, f_plus, k_plus)
+         qp(j) = q(j) - h
+         call node_face_contact(parameters, qp(1:3), reshape(qp(4:15), [3, 4]), area, anchor_xi, has_anchor, &
+                                clamp, minus, f_minus, k_plus)
+         if (plus%status /= expected_status .or. minus%status /= expected_status .or. &
+             (plus%clamped .neqv. base%clamped) .or. (minus%clamped .neqv. base%clamped)) then
+            call fatal_error(error, 'the difference of unknown '//to_string(j)//' crosses a branch')
+            return
+         end if
+         column = (f_plus - f_minus)/(2.0_dp*h)
+         worst = max(worst, maxval(abs(column - tangent(:, j))))
+      end do
+      if (expected_status == 0) then
+         if (maxval(abs(fint)) > 0.0_dp .or. scale > 0.0_dp .or. worst > 0.0_dp) &
+            call fatal_error(error, 'open contact must give exactly zero force and tangent')
+         return
+      end if
+      if (.not. (worst <= tangent_tolerance*scale)) &
+         call fatal_error(error, 'tangent vs central differences: max error '//to_string(worst)// &
+                          ', max |K| '//to_string(scale))
+   end subroutine check_face_tangent
+
+   !> Tangent of node_plane_contact against central differences (3 unknowns), same rules.
+   subroutine check_plane_tangent(error, parameters, x_slave, plane_point, plane_normal, area, anchor, &
+                                  expected_status, tangent)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_parameters_t), intent(in) :: parameters
+      real(dp), intent(in) :: x_slave(3), plane_point(3), plane_normal(3), area, anchor(3)
+      integer, intent(in) :: expected_status
+      real(dp), intent(out) :: tangent(3, 3)
+      type(contact_point_result_t) :: base, plus, minus
+      real(dp) :: xp(3), fint(3), f_plus(3), f_minus(3), k_other(3, 3), column(3), h, worst
+      integer :: j
+
+      h = relative_step*max(1.0_dp, maxval(abs(x_slave)))
+      call node_plane_contact(parameters, x_slave, plane_point, plane_normal, area, anchor, .true., base, &
+                              fint, tangent)
+      if (base%status /= expected_status) then
+         call fatal_error(error, 'status '//to_string(base%status)//', expected '//to_string(expected_status))
+         return
+      end if
+      worst = 0.0_dp
+      do j = 1, 3
+         xp = x_slave
+         xp(j) = x_slave(j) + h
+         call node_plane_contact(parameters, xp, plane_point, plane_normal, area, anchor, .true., plus, &
+                                 f_plus, k_other)
+         xp(j) = x_slave(j) - h
+         call node_plane_contact(parameters, xp, plane_point, plane_normal, area, anchor, .true., minus, &
+                                 f_minus, k_other)
+         if (plus%status /= expected_status .or. minus%status /= expected_status) then
+            call fatal_error(error, 'the difference of unknown '//to_string(j)//' crosses a branch')
+            return
+         end if
+         column = (f_plus - f_minus)/(2.0_dp*h)
+         worst = max(worst, maxval(abs(column - tangent(:, j))))
+      end do
+      if (.not. (worst <= tangent_tolerance*maxval(abs(tangent)))) &
+         call fatal_error(error, 'tangent vs central differences: max error '//to_string(worst)// &
+                          ', max |K| '//to_string(maxval(abs(tangent))))
+   end subroutine check_plane_tangent
+end module test_contact_fixtures

@@ -1,0 +1,148 @@
+!> Consistent tangents of the contact kernel against central differences of its internal
+!> force (reference: the kernel's own residual, differenced with step 1e-7 x face size; the
+!> status is checked at every perturbed point so that no difference crosses a branch).
+!> Geometry: the warped face of test_contact_fixtures (non-planar, non-rectangular);
+!> eps_N = 1e4, eps_T = 1e3, A_s = 0.5, penetration 0.01 so p_N = 100; with mu = 0.3 the slip
+!> limit is 30, reached at an elastic slip of 0.03: anchors 0.01 away stick, 0.1 away slip.
+module test_contact_tangent
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_testing, only: unittest_t, new_unittest, check
+   use frix_strings, only: to_string
+   use frix_contact_kernel, only: contact_open, contact_stick, contact_slip
+   use frix_face_projection, only: face_position, face_normal
+   use test_contact_fixtures, only: warped_face, make_parameters, check_face_tangent, check_plane_tangent, &
+                                    asymmetry, slave_below
+   implicit none
+   private
+
+   public :: collect_contact_tangent
+
+   real(dp), parameter :: area = 0.5_dp, depth = 0.01_dp, mu = 0.3_dp
+   !> A rigid plane through (0.1, -0.2, 0.3) with a tilted normal (not a coordinate axis).
+   real(dp), parameter :: plane_point(3) = [0.1_dp, -0.2_dp, 0.3_dp]
+   real(dp), parameter :: plane_normal(3) = [0.2_dp, -0.3_dp, 1.0_dp]
+
+contains
+
+   subroutine collect_contact_tangent(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('open: zero force and tangent', test_open), &
+               new_unittest('warped face, inside, stick', test_inside_stick), &
+               new_unittest('warped face, inside, slip (unsymmetric)', test_inside_slip), &
+               new_unittest('warped face, inside, frictionless (symmetric)', test_inside_frictionless), &
+               new_unittest('warped face, no anchor yet: stick at zero traction', test_no_anchor), &
+               new_unittest('warped face, near an edge (xi = 0.95), stick', test_edge_stick), &
+               new_unittest('warped face, near an edge (xi = 0.95), slip', test_edge_slip), &
+               new_unittest('warped face, beyond an edge, clamped, slip', test_clamped_edge), &
+               new_unittest('warped face, beyond a corner, clamped, stick', test_clamped_corner_stick), &
+               new_unittest('warped face, beyond a corner, clamped, slip', test_clamped_corner_slip), &
+               new_unittest('rigid plane, stick (symmetric)', test_plane_stick), &
+               new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip)]
+   end subroutine collect_contact_tangent
+
+   subroutine test_open(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.2_dp, -0.3_dp], -depth), &
+                              warped_face, area, [0.21_dp, -0.3_dp], .true., .false., contact_open, tangent)
+   end subroutine test_open
+
+   subroutine test_inside_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.2_dp, -0.3_dp], depth), &
+                              warped_face, area, [0.205_dp, -0.305_dp], .true., .false., contact_stick, tangent)
+   end subroutine test_inside_stick
+
+   subroutine test_inside_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.2_dp, -0.3_dp], depth), &
+                              warped_face, area, [0.3_dp, -0.25_dp], .true., .false., contact_slip, tangent)
+      if (allocated(error)) return
+      call check(error, asymmetry(tangent) > 1.0e-3_dp, 'slip tangent should be unsymmetric, asymmetry '// &
+                 to_string(asymmetry(tangent)))
+   end subroutine test_inside_slip
+
+   !> Frictionless: fint is the gradient of the penalty potential eps_N A g^2/2 (g the signed
+   !> distance to the closest point), so the tangent is its Hessian: symmetric.
+   subroutine test_inside_frictionless(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(0.0_dp), slave_below(warped_face, [0.2_dp, -0.3_dp], depth), &
+                              warped_face, area, [0.3_dp, -0.25_dp], .true., .false., contact_slip, tangent)
+      if (allocated(error)) return
+      call check(error, asymmetry(tangent) < 1.0e-12_dp, 'frictionless tangent should be symmetric, asymmetry '// &
+                 to_string(asymmetry(tangent)))
+   end subroutine test_inside_frictionless
+
+   subroutine test_no_anchor(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.2_dp, -0.3_dp], depth), &
+                              warped_face, area, [9.0_dp, 9.0_dp], .false., .false., contact_stick, tangent)
+   end subroutine test_no_anchor
+
+   subroutine test_edge_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.95_dp, 0.4_dp], depth), &
+                              warped_face, area, [0.945_dp, 0.405_dp], .true., .false., contact_stick, tangent)
+   end subroutine test_edge_stick
+
+   subroutine test_edge_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.95_dp, 0.4_dp], depth), &
+                              warped_face, area, [0.85_dp, 0.45_dp], .true., .false., contact_slip, tangent)
+   end subroutine test_edge_slip
+
+   !> A slave 0.05 (in xi1) beyond the edge xi1 = +1, below the extrapolated surface: the
+   !> clamped closest point lies on that edge (xi1 fixed, xi2 free).
+   subroutine test_clamped_edge(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.05_dp, 0.3_dp], depth), &
+                              warped_face, area, [0.9_dp, 0.35_dp], .true., .true., contact_slip, tangent)
+   end subroutine test_clamped_edge
+
+   !> A slave beyond the corner xi = (1, 1): the clamped point is the corner node 3.
+   subroutine test_clamped_corner_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.01_dp, 1.01_dp], depth), &
+                              warped_face, area, [0.995_dp, 0.995_dp], .true., .true., contact_stick, tangent)
+   end subroutine test_clamped_corner_stick
+
+   subroutine test_clamped_corner_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.04_dp, 1.03_dp], depth), &
+                              warped_face, area, [0.9_dp, 0.95_dp], .true., .true., contact_slip, tangent)
+   end subroutine test_clamped_corner_slip
+
+   subroutine test_plane_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(3, 3), normal(3), slave(3), anchor(3)
+      normal = plane_normal/norm2(plane_normal)
+      slave = plane_point + [0.4_dp, 0.3_dp, 0.0_dp] - depth*normal
+      anchor = slave + [0.01_dp, -0.005_dp, 0.0_dp]
+      call check_plane_tangent(error, make_parameters(mu), slave, plane_point, plane_normal, area, anchor, &
+                               contact_stick, tangent)
+      if (allocated(error)) return
+      call check(error, asymmetry(tangent) < 1.0e-14_dp, 'stick tangent on a plane should be symmetric')
+   end subroutine test_plane_stick
+
+   subroutine test_plane_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(3, 3), normal(3), slave(3), anchor(3)
+      normal = plane_normal/norm2(plane_normal)
+      slave = plane_point + [0.4_dp, 0.3_dp, 0.0_dp] - depth*normal
+      anchor = slave + [0.1_dp, -0.05_dp, 0.0_dp]
+      call check_plane_tangent(error, make_parameters(mu), slave, plane_point, plane_normal, area, anchor, &
+                               contact_slip, tangent)
+      if (allocated(error)) return
+      call check(error, asymmetry(tangent) > 1.0e-3_dp, 'slip tangent should be unsymmetric')
+   end subroutine test_plane_slip
+end module test_contact_tangent
