@@ -1,5 +1,5 @@
 !> frix: runs a CARAT-style input deck.
-!>   frix DECK [--out DIR] [--check] [--quiet]
+!>   frix DECK [--out DIR] [--check] [--quiet] [--restart FILE.h5 --from STEP.INCREMENT]
 !> Exit status 0 on success, 1 on a deck error or a failed analysis, 2 on a usage error.
 !> This is the only place where errors are printed.
 program frix
@@ -44,6 +44,23 @@ contains
             options%check_only = .true.
          case ('--quiet')
             options%quiet = .true.
+         case ('--restart')
+            if (i == n) then
+               write (0, '(a)') 'frix: --restart needs the HDF5 file of an earlier run'
+               status = 2
+               return
+            end if
+            i = i + 1
+            options%restart_path = get_argument(i)
+         case ('--from')
+            if (i == n) then
+               write (0, '(a)') 'frix: --from needs STEP.INCREMENT, e.g. --from 2.3'
+               status = 2
+               return
+            end if
+            i = i + 1
+            call parse_step_increment(get_argument(i), options%restart_step, options%restart_increment, status)
+            if (status /= 0) return
          case ('--out')
             if (i == n) then
                write (0, '(a)') 'frix: --out needs a directory'
@@ -69,8 +86,33 @@ contains
       if (.not. allocated(options%deck_path)) then
          write (0, '(a)') 'frix: no deck given'
          status = 2
+      else if (allocated(options%restart_path) .neqv. options%restart_step > 0) then
+         write (0, '(a)') 'frix: --restart FILE and --from STEP.INCREMENT go together'
+         status = 2
       end if
    end subroutine parse_command_line
+
+   !> "S.K" -> S, K (positive integers).
+   subroutine parse_step_increment(text, step, increment, status)
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: step, increment
+      integer, intent(out) :: status
+      integer :: dot, stat1, stat2
+      status = 0
+      step = 0
+      increment = 0
+      dot = index(text, '.')
+      stat1 = 1
+      stat2 = 1
+      if (dot > 1 .and. dot < len(text)) then
+         read (text(:dot - 1), *, iostat=stat1) step
+         read (text(dot + 1:), *, iostat=stat2) increment
+      end if
+      if (stat1 /= 0 .or. stat2 /= 0 .or. step < 1 .or. increment < 1 .or. verify(text, '0123456789.') /= 0) then
+         write (0, '(a)') 'frix: --from "'//text//'": expected STEP.INCREMENT with positive integers, e.g. 2.3'
+         status = 2
+      end if
+   end subroutine parse_step_increment
 
    function get_argument(i) result(argument)
       integer, intent(in) :: i
@@ -82,10 +124,13 @@ contains
    end function get_argument
 
    subroutine print_usage()
-      write (*, '(a)') 'usage: frix DECK [--out DIR] [--check] [--quiet]'
+      write (*, '(a)') 'usage: frix DECK [--out DIR] [--check] [--quiet] [--restart FILE.h5 --from S.K]'
       write (*, '(a)') '  DECK       input deck (CARAT-style sections, see docs/deck-format.md)'
       write (*, '(a)') '  --out DIR  write results into DIR (default: beside the deck)'
       write (*, '(a)') '  --check    read and validate the deck, solve nothing'
       write (*, '(a)') '  --quiet    no progress lines'
+      write (*, '(a)') '  --restart FILE.h5 --from S.K'
+      write (*, '(a)') '             continue from converged increment K of step S stored in the'
+      write (*, '(a)') '             HDF5 results of an earlier run (RESULTS: HDF5 Yes) of the same deck'
    end subroutine print_usage
 end program frix

@@ -48,3 +48,24 @@ add_test(NAME pos3d_writer COMMAND bash ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_
 add_test(NAME pos3d_roundtrip COMMAND bash ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_roundtrip_test.sh ${FRIX_BIN})
 set_tests_properties(pos3d_writer PROPERTIES LABELS unit)
 set_tests_properties(pos3d_roundtrip PROPERTIES LABELS regression SKIP_RETURN_CODE 77)
+
+# HDF5 results: write/read round trip (Fortran) and the documented layout (h5py).
+add_executable(hdf5_roundtrip_check hdf5/hdf5_roundtrip_suite.f90 hdf5/hdf5_roundtrip_check.f90)
+set_target_properties(hdf5_roundtrip_check PROPERTIES Fortran_MODULE_DIRECTORY ${PROJECT_BINARY_DIR}/modules/hdf5_roundtrip_check)
+target_link_libraries(hdf5_roundtrip_check PRIVATE frix_io frix_testing)
+add_test(NAME hdf5_roundtrip COMMAND hdf5_roundtrip_check)
+set_tests_properties(hdf5_roundtrip PROPERTIES LABELS unit ENVIRONMENT FRIX_TEST_OUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR})
+add_test(NAME hdf5_h5py_layout COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/h5py_layout_test.sh $<TARGET_FILE:hdf5_roundtrip_check>)
+set_tests_properties(hdf5_h5py_layout PROPERTIES LABELS unit)
+
+# Restart from the HDF5 file of an earlier run reaches the same final state.
+add_test(NAME restart_beam COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_beam.dck)
+set_tests_properties(restart_beam PROPERTIES LABELS regression)
+
+# Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
+foreach(script plot_history plot_line render_mesh mohr_coulomb)
+  add_test(NAME postproc_${script}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/postproc/test_${script}.sh ${FRIX_BIN})
+  set_tests_properties(postproc_${script} PROPERTIES LABELS postproc)
+endforeach()

@@ -21,6 +21,7 @@ module frix_driver
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
    use frix_support_check, only: check_rigid_body_support
+   use frix_hdf5_results, only: read_restart
    implicit none
    private
 
@@ -31,6 +32,9 @@ module frix_driver
       character(len=:), allocatable :: output_directory  !! default: the deck's directory
       logical :: check_only = .false.
       logical :: quiet = .false.
+      character(len=:), allocatable :: restart_path    !! HDF5 file of an earlier run
+      integer :: restart_step = 0                       !! continue after this converged increment
+      integer :: restart_increment = 0
    end type run_options_t
 
    real(dp), parameter :: growth_factor = 1.5_dp
@@ -44,7 +48,7 @@ contains
       type(analysis_state_t) :: state
       type(newton_context_t) :: context
       type(results_output_t) :: output
-      integer :: step
+      integer :: step, first_step, first_increment
       real(dp) :: start
 
       start = wall_clock_seconds()
@@ -62,12 +66,19 @@ contains
       call check_rigid_body_support(model, context%fixed, error)
       if (allocated(error)) return
       context%quiet = options%quiet
+      first_step = 1
+      first_increment = 0
+      if (allocated(options%restart_path)) then
+         call restart_state(model, options, results_base(options), state, first_step, first_increment, error)
+         if (allocated(error)) return
+      end if
       call output%open(model, results_base(options), error)
       if (allocated(error)) return
       if (.not. options%quiet) call print_banner(model, context)
 
-      do step = 1, size(model%steps)
-         call run_step(model, step, context, state, output, options%quiet, error)
+      do step = first_step, size(model%steps)
+         call run_step(model, step, merge(first_increment, 0, step == first_step), context, state, &
+                       output, options%quiet, error)
          if (allocated(error)) exit
       end do
       call output%close(error)
@@ -119,9 +130,10 @@ contains
    end function peak_resident_megabytes
 
    !> March through step `step`, cutting back failed increments.
-   subroutine run_step(model, step, context, state, output, quiet, error)
+   subroutine run_step(model, step, first_increment, context, state, output, quiet, error)
       type(model_t), intent(in) :: model
       integer, intent(in) :: step
+      integer, intent(in) :: first_increment  !! increments of this step already done (restart)
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       type(results_output_t), intent(inout) :: output
@@ -139,7 +151,7 @@ contains
       if (max_iterations <= 0) max_iterations = model%controls%max_iterations
       size_now = nominal
       smallest = nominal*0.5_dp**model%controls%max_cutbacks
-      increment = 0
+      increment = first_increment
       do while (state%committed_time < step_end - 1.0e-12_dp)
          target_time = min(state%committed_time + size_now, step_end)
          if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
@@ -172,6 +184,81 @@ contains
          end if
       end do
    end subroutine run_step
+
+   !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
+   !> file of an earlier run of the same model, and say where the run continues: the step
+   !> holding that increment (or the next step if the increment ended its step).
+   subroutine restart_state(model, options, base, state, first_step, first_increment, error)
+      type(model_t), intent(in) :: model
+      type(run_options_t), intent(in) :: options
+      character(len=*), intent(in) :: base
+      type(analysis_state_t), intent(inout) :: state
+      integer, intent(out) :: first_step, first_increment
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: time
+      if (model%results%hdf5 .and. same_file(options%restart_path, base//'.h5')) then
+         call fatal_error(error, 'frix: the restart file '//options%restart_path//' would be '// &
+                          'overwritten by this run''s HDF5 results: write them elsewhere with --out DIR')
+         return
+      end if
+      if (options%restart_step < 1 .or. options%restart_step > size(model%steps)) then
+         call fatal_error(error, 'frix: --from '//to_string(options%restart_step)//'.'// &
+                          to_string(options%restart_increment)//': the deck has steps 1 to '// &
+                          to_string(size(model%steps)))
+         return
+      end if
+      time = 0.0_dp
+      call read_restart(options%restart_path, options%restart_step, options%restart_increment, time, &
+                        state%u, state%alpha, state%history, error, model%mesh)
+      if (allocated(error)) then
+         error%message = 'frix: restart from '//options%restart_path//': '//error%message
+         return
+      end if
+      state%time = time
+      call commit_state(state)
+      first_step = options%restart_step
+      first_increment = options%restart_increment
+      if (abs(time - real(first_step, dp)) < 1.0e-12_dp) then
+         first_step = first_step + 1
+         first_increment = 0
+      end if
+      if (.not. options%quiet) write (*, '(a)') 'frix: restarting from '//options%restart_path// &
+         ', step '//to_string(options%restart_step)//' increment '//to_string(options%restart_increment)// &
+         ' (t = '//time_text(time)//')'
+   end subroutine restart_state
+
+   !> Whether two paths name the same existing file (compared by their canonical form).
+   function same_file(first, second) result(same)
+      character(len=*), intent(in) :: first, second
+      logical :: same
+      logical :: exists_first, exists_second
+      inquire (file=first, exist=exists_first)
+      inquire (file=second, exist=exists_second)
+      same = .false.
+      if (.not. (exists_first .and. exists_second)) return
+      same = canonical(first) == canonical(second)
+   end function same_file
+
+   !> The path with "./" and "//" removed; enough for the restart clash check.
+   function canonical(path) result(clean)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: clean
+      integer :: k
+      clean = path
+      do
+         k = index(clean, '//')
+         if (k == 0) exit
+         clean = clean(:k)//clean(k + 2:)
+      end do
+      do
+         k = index(clean, '/./')
+         if (k == 0) exit
+         clean = clean(:k)//clean(k + 3:)
+      end do
+      if (len(clean) > 2) then
+         if (clean(1:2) == './') clean = clean(3:)
+      end if
+   end function canonical
 
    !> A pseudo time with 10 significant digits.
    pure function time_text(time) result(text)

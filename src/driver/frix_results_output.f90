@@ -1,7 +1,8 @@
 !> The result files of a run, written after every converged increment (so a run that stops
 !> keeps everything converged): the fixed-column listing `<base>_listing.txt`, the ParaView
 !> series `<base>.pvd` + `<base>_<step>_<increment>.vtu`, and the CSV history
-!> `<base>_history.csv` of the requested node DOFs. See docs/output.md.
+!> `<base>_history.csv` of the requested node DOFs, and on request the POS3D neutral file
+!> `<base>.pos` and the HDF5 results/restart file `<base>.h5`. See docs/output.md.
 module frix_results_output
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -13,6 +14,7 @@ module frix_results_output
    use frix_vtk_writer, only: vtk_series_t
    use frix_history_writer, only: history_t
    use frix_pos3d_writer, only: pos3d_writer_t
+   use frix_hdf5_results, only: hdf5_results_t
    implicit none
    private
 
@@ -26,6 +28,8 @@ module frix_results_output
       type(vtk_series_t) :: vtk
       type(history_t) :: history
       type(pos3d_writer_t) :: pos3d
+      type(hdf5_results_t) :: hdf5
+      logical :: hdf5_open = .false.
       logical :: has_history = .false.
       logical :: pos3d_open = .false.
    contains
@@ -61,6 +65,11 @@ contains
       if (model%results%pos3d) then
          call open_pos3d(self, model, base, error)
          if (allocated(error)) return
+      end if
+      if (model%results%hdf5) then
+         call self%hdf5%create(base//'.h5', model%mesh, model%title, model%deck_path, frix_version, error)
+         if (allocated(error)) return
+         self%hdf5_open = .true.
       end if
       if (allocated(model%results%history)) then
          if (size(model%results%history) > 0) then
@@ -120,7 +129,7 @@ contains
          if (allocated(error)) return
       end if
 
-      if (model%results%vtk .or. model%results%pos3d) then
+      if (model%results%vtk .or. model%results%pos3d .or. model%results%hdf5) then
          allocate (gp_stress(6, 8, model%mesh%n_elements), gp_strain(6, 8, model%mesh%n_elements))
          allocate (fint(3*n_nodes))
          call assemble_internal(model, state, fint, error, gp_stress=gp_stress, gp_strain=gp_strain)
@@ -129,6 +138,11 @@ contains
       if (model%results%vtk) then
          call self%vtk%write_increment(model%mesh, step, increment, state%time, displacement, &
                                        reaction, gp_stress, gp_strain, error)
+         if (allocated(error)) return
+      end if
+      if (self%hdf5_open) then
+         call self%hdf5%write_increment(step, increment, state%time, displacement, reaction, gp_stress, &
+                                        gp_strain, state%committed_alpha, state%committed_history, error)
          if (allocated(error)) return
       end if
       if (model%results%pos3d) then
@@ -169,6 +183,7 @@ contains
       if (self%listing%is_open()) call self%listing%close(close_error)
       if (self%has_history) call self%history%close(close_error)
       if (self%pos3d_open) call self%pos3d%close(close_error)
+      if (self%hdf5_open) call self%hdf5%close(close_error)
       if (allocated(close_error) .and. .not. allocated(error)) call move_alloc(close_error, error)
    end subroutine output_close
 end module frix_results_output

@@ -1,0 +1,509 @@
+!> Checked wrappers around the HDF5 1.10 Fortran API used by the results file
+!> (`frix_hdf5_results`): every HDF5 return code is tested and a failure becomes an `error_t`
+!> naming the file and the object ("HDF5: cannot <action> "<object>" in "<file>"").
+!>
+!> Arrays are written in Fortran (column-major) order with the Fortran shape reversed in the
+!> HDF5 dataspace, as the HDF5 Fortran library does: a Fortran array (3, n) is a C/h5py array
+!> (n, 3) with identical bytes. Reals are H5T_NATIVE_DOUBLE (IEEE binary64, exact round trip),
+!> integers are the native Fortran default integer (int32). Strings are fixed-length,
+!> NUL-terminated C strings (h5py returns them as `bytes`).
+!> Empty arrays (a zero extent) are stored as datasets with a zero dimension and no data.
+module frix_hdf5_support
+   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr, c_null_char
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
+                   h5gcreate_f, h5gopen_f, h5gclose_f, h5lexists_f, &
+                   h5screate_simple_f, h5screate_f, h5sclose_f, h5s_scalar_f, &
+                   h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, &
+                   h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, h5dget_space_f, &
+                   h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, h5aexists_f, &
+                   h5tcopy_f, h5tset_size_f, h5tset_strpad_f, h5tclose_f, h5t_str_nullterm_f, &
+                   h5t_native_double, h5t_native_integer, h5t_native_character
+   implicit none
+   private
+
+   public :: hid_t
+   public :: hdf5_location_t, hdf5_initialize
+   public :: create_group, open_group, close_group, link_exists
+   public :: write_dataset, read_dataset, dataset_shape
+   public :: write_attribute, read_attribute, attribute_exists
+
+   !> An open HDF5 file or group together with the names used in error messages.
+   type :: hdf5_location_t
+      integer(hid_t) :: id = -1
+      character(len=:), allocatable :: file_path   !! the file, as given by the caller
+      character(len=:), allocatable :: name        !! absolute HDF5 path of the object, '/' for the file
+   end type hdf5_location_t
+
+   !> Write a dataset `name` below a location: real(dp) of rank 1-3, default integer of rank 1-2.
+   interface write_dataset
+      module procedure write_real_1, write_real_2, write_real_3, write_integer_1, write_integer_2
+   end interface write_dataset
+
+   !> Read a dataset whose Fortran shape must equal the shape of the (already sized) array.
+   interface read_dataset
+      module procedure read_real_1, read_real_2, read_real_3, read_integer_2
+   end interface read_dataset
+
+   !> Scalar attribute: text, default integer or real(dp).
+   interface write_attribute
+      module procedure write_attribute_text, write_attribute_integer, write_attribute_real
+   end interface write_attribute
+
+   !> Scalar numeric attribute (HDF5 converts between numeric types).
+   interface read_attribute
+      module procedure read_attribute_integer, read_attribute_real
+   end interface read_attribute
+
+contains
+
+   !> Initialise the HDF5 Fortran library (predefined types) and switch off HDF5's automatic
+   !> printing of its error stack: errors are reported through `error_t` only. Idempotent.
+   subroutine hdf5_initialize(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      call h5open_f(status)
+      if (status /= 0) then
+         call fatal_error(error, 'HDF5: cannot initialise the HDF5 library')
+         return
+      end if
+      call h5eset_auto_f(0, status)
+      if (status /= 0) call fatal_error(error, 'HDF5: cannot switch off automatic error printing')
+   end subroutine hdf5_initialize
+
+   !> Absolute HDF5 path of `name` below `parent`.
+   pure function child_path(parent, name) result(path)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      if (parent%name == '/') then
+         path = '/'//name
+      else
+         path = parent%name//'/'//name
+      end if
+   end function child_path
+
+   !> The error "HDF5: cannot <action> "<object>" in "<file>"".
+   subroutine hdf5_failure(error, action, location, name)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: action
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: object
+      object = location%name
+      if (len(name) > 0) object = child_path(location, name)
+      call fatal_error(error, 'HDF5: cannot '//action//' "'//object//'" in "'//location%file_path//'"')
+   end subroutine hdf5_failure
+
+   !> Create the group `name` below `parent`.
+   subroutine create_group(parent, name, group, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      type(hdf5_location_t), intent(out) :: group
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      call h5gcreate_f(parent%id, name, group%id, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'create group', parent, name)
+         return
+      end if
+      group%file_path = parent%file_path
+      group%name = child_path(parent, name)
+   end subroutine create_group
+
+   !> Open the existing group `name` below `parent`.
+   subroutine open_group(parent, name, group, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      type(hdf5_location_t), intent(out) :: group
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      call h5gopen_f(parent%id, name, group%id, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'open group', parent, name)
+         return
+      end if
+      group%file_path = parent%file_path
+      group%name = child_path(parent, name)
+   end subroutine open_group
+
+   !> Close a group opened by `create_group` or `open_group` (no-op if not open).
+   subroutine close_group(group, error)
+      type(hdf5_location_t), intent(inout) :: group
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      if (group%id < 0) return
+      call h5gclose_f(group%id, status)
+      if (status /= 0) call hdf5_failure(error, 'close group', group, '')
+      group%id = -1
+   end subroutine close_group
+
+   !> Whether a link (group or dataset) `name` exists directly below `parent`.
+   subroutine link_exists(parent, name, exists, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      logical, intent(out) :: exists
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      exists = .false.
+      call h5lexists_f(parent%id, name, exists, status)
+      if (status /= 0) call hdf5_failure(error, 'look up', parent, name)
+   end subroutine link_exists
+
+   !> Create a dataset of `type_id` with Fortran shape `fortran_shape` (stored reversed) and
+   !> write `buffer` (the array's first element, column-major) unless it is empty.
+   subroutine write_raw(parent, name, type_id, fortran_shape, buffer, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: type_id
+      integer, intent(in) :: fortran_shape(:)
+      type(c_ptr), intent(in) :: buffer
+      type(error_t), allocatable, intent(out) :: error
+      integer(hsize_t) :: dims(size(fortran_shape))
+      integer(hid_t) :: space, dataset
+      integer :: status, close_status
+      ! The HDF5 Fortran library reverses the dimensions itself: dims are given in Fortran order.
+      dims = int(fortran_shape, hsize_t)
+      call h5screate_simple_f(size(dims), dims, space, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'create the dataspace of', parent, name)
+         return
+      end if
+      call h5dcreate_f(parent%id, name, type_id, space, dataset, status)
+      if (status /= 0) then
+         call h5sclose_f(space, close_status)
+         call hdf5_failure(error, 'create dataset', parent, name)
+         return
+      end if
+      if (product(fortran_shape) > 0) call h5dwrite_f(dataset, type_id, buffer, status)
+      call h5dclose_f(dataset, close_status)
+      if (status == 0) status = close_status
+      call h5sclose_f(space, close_status)
+      if (status == 0) status = close_status
+      if (status /= 0) call hdf5_failure(error, 'write dataset', parent, name)
+   end subroutine write_raw
+
+   subroutine write_real_1(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable, target :: buffer(:)
+      allocate (buffer, source=values)
+      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+   end subroutine write_real_1
+
+   subroutine write_real_2(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable, target :: buffer(:, :)
+      allocate (buffer, source=values)
+      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+   end subroutine write_real_2
+
+   subroutine write_real_3(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable, target :: buffer(:, :, :)
+      allocate (buffer, source=values)
+      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+   end subroutine write_real_3
+
+   subroutine write_integer_1(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable, target :: buffer(:)
+      allocate (buffer, source=values)
+      call write_raw(parent, name, h5t_native_integer, shape(values), c_loc(buffer), error)
+   end subroutine write_integer_1
+
+   subroutine write_integer_2(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: values(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable, target :: buffer(:, :)
+      allocate (buffer, source=values)
+      call write_raw(parent, name, h5t_native_integer, shape(values), c_loc(buffer), error)
+   end subroutine write_integer_2
+
+   !> Fortran shape of dataset `name` below `parent` (the reverse of what h5py shows).
+   subroutine dataset_shape(parent, name, fortran_shape, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer, allocatable, intent(out) :: fortran_shape(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dataset
+      integer :: status, close_status
+      call h5dopen_f(parent%id, name, dataset, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'open dataset', parent, name)
+         return
+      end if
+      call shape_of_open_dataset(dataset, fortran_shape, status)
+      call h5dclose_f(dataset, close_status)
+      if (status /= 0 .or. close_status /= 0) call hdf5_failure(error, 'query the shape of dataset', parent, name)
+   end subroutine dataset_shape
+
+   subroutine shape_of_open_dataset(dataset, fortran_shape, status)
+      integer(hid_t), intent(in) :: dataset
+      integer, allocatable, intent(out) :: fortran_shape(:)
+      integer, intent(out) :: status
+      integer(hid_t) :: space
+      integer(hsize_t), allocatable :: dims(:), max_dims(:)
+      integer :: rank, close_status
+      allocate (fortran_shape(0))
+      call h5dget_space_f(dataset, space, status)
+      if (status /= 0) return
+      call h5sget_simple_extent_ndims_f(space, rank, status)
+      if (status == 0) then
+         allocate (dims(rank), max_dims(rank))
+         ! returns the rank in `status` on success, -1 on failure
+         call h5sget_simple_extent_dims_f(space, dims, max_dims, status)
+         if (status == rank) then
+            status = 0
+            fortran_shape = int(dims)
+         else
+            status = -1
+         end if
+      end if
+      call h5sclose_f(space, close_status)
+      if (status == 0) status = close_status
+   end subroutine shape_of_open_dataset
+
+   !> Open dataset `name`, check that its Fortran shape is `expected`, read it into `buffer`.
+   subroutine read_raw(parent, name, type_id, expected, buffer, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: type_id
+      integer, intent(in) :: expected(:)
+      type(c_ptr), intent(in) :: buffer
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dataset
+      type(c_ptr) :: destination
+      integer, allocatable :: found(:)
+      integer :: status, close_status
+      call h5dopen_f(parent%id, name, dataset, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'open dataset', parent, name)
+         return
+      end if
+      call shape_of_open_dataset(dataset, found, status)
+      if (status /= 0) then
+         call h5dclose_f(dataset, close_status)
+         call hdf5_failure(error, 'query the shape of dataset', parent, name)
+         return
+      end if
+      if (size(found) /= size(expected)) then
+         call h5dclose_f(dataset, close_status)
+         call fatal_error(error, 'HDF5: dataset "'//child_path(parent, name)//'" in "'//parent%file_path// &
+                          '" has rank '//to_string(size(found))//', expected '//to_string(size(expected)))
+         return
+      end if
+      if (any(found /= expected)) then
+         call h5dclose_f(dataset, close_status)
+         call fatal_error(error, 'HDF5: dataset "'//child_path(parent, name)//'" in "'//parent%file_path// &
+                          '" has shape '//shape_text(found)//', the current model needs '//shape_text(expected)// &
+                          ' (shapes in h5py order)')
+         return
+      end if
+      status = 0
+      destination = buffer   ! h5dread_f wants an intent(inout) C pointer
+      if (product(expected) > 0) call h5dread_f(dataset, type_id, destination, status)
+      call h5dclose_f(dataset, close_status)
+      if (status == 0) status = close_status
+      if (status /= 0) call hdf5_failure(error, 'read dataset', parent, name)
+   end subroutine read_raw
+
+   !> "(n1, n2, ...)" in h5py (C) order, i.e. the Fortran shape reversed.
+   pure function shape_text(fortran_shape) result(text)
+      integer, intent(in) :: fortran_shape(:)
+      character(len=:), allocatable :: text
+      integer :: i
+      text = '('
+      do i = size(fortran_shape), 1, -1
+         text = text//to_string(fortran_shape(i))
+         if (i > 1) text = text//', '
+      end do
+      text = text//')'
+   end function shape_text
+
+   subroutine read_real_1(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      real(dp), intent(inout) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable, target :: buffer(:)
+      allocate (buffer(size(values)))
+      call read_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+      if (.not. allocated(error)) values = buffer
+   end subroutine read_real_1
+
+   subroutine read_real_2(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      real(dp), intent(inout) :: values(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable, target :: buffer(:, :)
+      allocate (buffer(size(values, 1), size(values, 2)))
+      call read_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+      if (.not. allocated(error)) values = buffer
+   end subroutine read_real_2
+
+   subroutine read_real_3(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      real(dp), intent(inout) :: values(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable, target :: buffer(:, :, :)
+      allocate (buffer(size(values, 1), size(values, 2), size(values, 3)))
+      call read_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+      if (.not. allocated(error)) values = buffer
+   end subroutine read_real_3
+
+   subroutine read_integer_2(parent, name, values, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer, intent(inout) :: values(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable, target :: buffer(:, :)
+      allocate (buffer(size(values, 1), size(values, 2)))
+      call read_raw(parent, name, h5t_native_integer, shape(values), c_loc(buffer), error)
+      if (.not. allocated(error)) values = buffer
+   end subroutine read_integer_2
+
+   !> Create the scalar attribute `name` of `type_id` on `location` and write `buffer`.
+   subroutine write_attribute_raw(location, name, type_id, buffer, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: type_id
+      type(c_ptr), intent(in) :: buffer
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: space, attribute
+      integer :: status, close_status
+      call h5screate_f(h5s_scalar_f, space, status)
+      if (status /= 0) then
+         call fatal_error(error, 'HDF5: cannot create the dataspace of attribute "'//name//'" of "'// &
+                          location%name//'" in "'//location%file_path//'"')
+         return
+      end if
+      call h5acreate_f(location%id, name, type_id, space, attribute, status)
+      if (status == 0) then
+         call h5awrite_f(attribute, type_id, buffer, status)
+         call h5aclose_f(attribute, close_status)
+         if (status == 0) status = close_status
+      end if
+      call h5sclose_f(space, close_status)
+      if (status == 0) status = close_status
+      if (status /= 0) call fatal_error(error, 'HDF5: cannot write attribute "'//name//'" of "'// &
+                                        location%name//'" in "'//location%file_path//'"')
+   end subroutine write_attribute_raw
+
+   !> Text attribute: a fixed-length NUL-terminated (H5T_STR_NULLTERM) string of len(text) + 1 bytes.
+   subroutine write_attribute_text(location, name, text, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: text
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable, target :: buffer
+      integer(hid_t) :: string_type
+      integer :: status, close_status
+      buffer = text//c_null_char
+      call h5tcopy_f(h5t_native_character, string_type, status)
+      if (status == 0) call h5tset_size_f(string_type, int(len(buffer), size_t), status)
+      if (status == 0) call h5tset_strpad_f(string_type, h5t_str_nullterm_f, status)
+      if (status /= 0) then
+         call fatal_error(error, 'HDF5: cannot make the string type of attribute "'//name//'" of "'// &
+                          location%name//'" in "'//location%file_path//'"')
+         return
+      end if
+      call write_attribute_raw(location, name, string_type, c_loc(buffer), error)
+      call h5tclose_f(string_type, close_status)
+      if (.not. allocated(error) .and. close_status /= 0) &
+         call fatal_error(error, 'HDF5: cannot close the string type of attribute "'//name//'"')
+   end subroutine write_attribute_text
+
+   subroutine write_attribute_integer(location, name, value, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: value
+      type(error_t), allocatable, intent(out) :: error
+      integer, target :: buffer
+      buffer = value
+      call write_attribute_raw(location, name, h5t_native_integer, c_loc(buffer), error)
+   end subroutine write_attribute_integer
+
+   subroutine write_attribute_real(location, name, value, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: value
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), target :: buffer
+      buffer = value
+      call write_attribute_raw(location, name, h5t_native_double, c_loc(buffer), error)
+   end subroutine write_attribute_real
+
+   !> Whether `location` carries the attribute `name`.
+   subroutine attribute_exists(location, name, exists, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      logical, intent(out) :: exists
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      exists = .false.
+      call h5aexists_f(location%id, name, exists, status)
+      if (status /= 0) call fatal_error(error, 'HDF5: cannot look up attribute "'//name//'" of "'// &
+                                        location%name//'" in "'//location%file_path//'"')
+   end subroutine attribute_exists
+
+   !> Read the scalar attribute `name` of `location` as `type_id` into `buffer`.
+   subroutine read_attribute_raw(location, name, type_id, buffer, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: type_id
+      type(c_ptr), intent(in) :: buffer
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: attribute
+      type(c_ptr) :: destination
+      integer :: status, close_status
+      call h5aopen_f(location%id, name, attribute, status)
+      if (status == 0) then
+         destination = buffer   ! h5aread_f wants an intent(inout) C pointer
+         call h5aread_f(attribute, type_id, destination, status)
+         call h5aclose_f(attribute, close_status)
+         if (status == 0) status = close_status
+      end if
+      if (status /= 0) call fatal_error(error, 'HDF5: cannot read attribute "'//name//'" of "'// &
+                                        location%name//'" in "'//location%file_path//'"')
+   end subroutine read_attribute_raw
+
+   subroutine read_attribute_integer(location, name, value, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: value
+      type(error_t), allocatable, intent(out) :: error
+      integer, target :: buffer
+      buffer = 0
+      call read_attribute_raw(location, name, h5t_native_integer, c_loc(buffer), error)
+      value = buffer
+   end subroutine read_attribute_integer
+
+   subroutine read_attribute_real(location, name, value, error)
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      real(dp), intent(out) :: value
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), target :: buffer
+      buffer = 0.0_dp
+      call read_attribute_raw(location, name, h5t_native_double, c_loc(buffer), error)
+      value = buffer
+   end subroutine read_attribute_real
+end module frix_hdf5_support

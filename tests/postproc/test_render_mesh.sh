@@ -1,0 +1,87 @@
+#!/bin/bash
+# Test of postproc/render_mesh.py on a real frix run (the 4-element bar of
+# postproc_test_lib.sh) and of its boundary-face extraction on synthetic HEX8 meshes.
+# Usage: test_render_mesh.sh <path of the frix executable>; exit 0 if all checks pass.
+source "$(dirname "$0")/postproc_test_lib.sh"
+run_bar_deck
+OUT=$WORK/out
+RENDER=("$PYTHON" "$POSTPROC/render_mesh.py")
+
+# 1. Boundary faces: an n x m x k block of hexahedra has 2 (nm + mk + nk) of them, each
+#    listed once, with the outward orientation (the face normal from the node order points
+#    away from its element's centroid). Checked for 1x1x1 (6), 4x1x1 (18) and 3x2x2 (32).
+if message=$("$PYTHON" - "$POSTPROC" <<'PY' 2>&1
+import sys
+sys.path.insert(0, sys.argv[1])
+import numpy as np
+import render_mesh
+
+def block(nx, ny, nz):
+    node = lambda i, j, k: i + (nx + 1) * (j + (ny + 1) * k)
+    points = np.array([[i, j, k] for k in range(nz + 1) for j in range(ny + 1)
+                       for i in range(nx + 1)], dtype=float)
+    cells = [[node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+              node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+              node(i, j + 1, k + 1)]
+             for k in range(nz) for j in range(ny) for i in range(nx)]
+    return points, np.array(cells)
+
+for n in [(1, 1, 1), (4, 1, 1), (3, 2, 2)]:
+    points, cells = block(*n)
+    faces, owners = render_mesh.boundary_faces(cells)
+    expected = 2 * (n[0] * n[1] + n[1] * n[2] + n[0] * n[2])
+    assert len(faces) == expected, (n, len(faces), expected)
+    assert len({tuple(sorted(face)) for face in faces}) == expected, "a face listed twice"
+    corners = points[faces]
+    normal = np.cross(corners[:, 2] - corners[:, 0], corners[:, 3] - corners[:, 1])
+    outward = corners.mean(axis=1) - points[cells[owners]].mean(axis=1)
+    assert np.all(np.einsum("ij,ij->i", normal, outward) > 0), "inward face"
+    # every boundary face lies on the block's surface
+    on_surface = np.all([np.any((np.abs(c - 0) < 1e-12) | (np.abs(c - np.array(n)) < 1e-12),
+                                axis=1) for c in corners], axis=1)
+    assert np.all(on_surface), "interior face drawn"
+print("6, 18, 32 outward boundary faces")
+PY
+); then pass "boundary_faces: $message"; else fail "boundary_faces: $message"; fi
+
+# 2. Figures: point field, cell field of an earlier increment, auto scale + reference shape.
+if "${RENDER[@]}" "$OUT/bar.pvd" --field von_mises -o "$WORK/vm.png" > "$WORK/log.txt" 2>&1 \
+        && grep -q "18 boundary faces, scale 1)" "$WORK/log.txt"; then
+    check_png "$WORK/vm.png" "render_mesh von_mises (18 boundary faces)"
+else
+    fail "render_mesh von_mises: $(cat "$WORK/log.txt")"
+fi
+if "${RENDER[@]}" "$OUT/bar.pvd" --field stress:xx --cell --increment 1:1 --view 30,-120 \
+        --title "bar" -o "$WORK/sxx.png" > "$WORK/log.txt" 2>&1; then
+    check_png "$WORK/sxx.png" "render_mesh cell stress:xx of increment 1:1"
+else
+    fail "render_mesh --cell: $(cat "$WORK/log.txt")"
+fi
+# auto scale: largest |u| (6e-3 at x = 4, t = 1) drawn as 10 % of the diagonal sqrt(18):
+# factor = 0.1 sqrt(18) / 6e-3 = 70.71.
+if "${RENDER[@]}" "$OUT/bar.pvd" --field displacement:2 --scale auto --undeformed \
+        -o "$WORK/uz.png" > "$WORK/log.txt" 2>&1 && grep -q "scale 70.71" "$WORK/log.txt"; then
+    check_png "$WORK/uz.png" "render_mesh --scale auto (70.71) --undeformed"
+else
+    fail "render_mesh --scale auto: $(cat "$WORK/log.txt")"
+fi
+
+# 3. User mistakes.
+expect_user_error "missing result" "not found: $WORK/none.vtu" \
+    "${RENDER[@]}" "$WORK/none.vtu" -o "$WORK/x.png"
+expect_user_error "unknown field" "no point field 'pressure'" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --field pressure -o "$WORK/x.png"
+expect_user_error "unknown cell field" "no cell field 'reaction'" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --field reaction --cell -o "$WORK/x.png"
+expect_user_error "bad --view" "--view needs 2 comma-separated numbers" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --view 30 -o "$WORK/x.png"
+expect_user_error "bad --scale" "--scale: 'big' is neither a number nor 'auto'" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --scale big -o "$WORK/x.png"
+expect_user_error "increment out of range" "increment position 5 out of range 1..2" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --increment 5 -o "$WORK/x.png"
+expect_user_error "several increments" "exactly one increment" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --increment all -o "$WORK/x.png"
+expect_user_error "not a result file" "expected a .pvd or .vtu file" \
+    "${RENDER[@]}" "$OUT/bar_history.csv" -o "$WORK/x.png"
+[ ! -e "$WORK/x.png" ] && pass "no figure written on errors" || fail "a figure was written despite errors"
+finish
