@@ -21,18 +21,19 @@ module frix_mesh_checks
 contains
 
    !> Internal numbers of the elements whose Jacobian determinant det(dx/dxi) is <= 0 at one
-   !> of the 8 corners or at the centre (inverted or degenerate elements; det > 0 everywhere
-   !> for a valid element with the node order of frix_mesh). The trilinear map
-   !> x(xi) = sum_a N_a(xi) x_a, N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta)/8, gives
-   !> at a corner the triple product of its three edges / 8. A mirrored mesh (node order
-   !> clockwise) has det < 0 everywhere.
+   !> of the 8 Gauss points of the 2 x 2 x 2 rule (xi = +-1/sqrt 3) or at the centre: where
+   !> the element is integrated (inverted or degenerate elements). A strongly distorted
+   !> element may have det < 0 at a corner and still be usable: the 7-element patch of
+   !> MacNeal & Harder has one such element (tests/verification V1). The trilinear map is
+   !> x(xi) = sum_a N_a(xi) x_a, N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta)/8. A mirrored
+   !> mesh (node order clockwise) has det < 0 everywhere.
    subroutine check_hex8_jacobians(mesh, bad_elements)
       type(mesh_t), intent(in) :: mesh
       integer, allocatable, intent(out) :: bad_elements(:)
       logical, allocatable :: is_bad(:)
       real(dp) :: points(3, 9), x(3, 8)
       integer :: element, point
-      points(:, 1:8) = hex8_natural
+      points(:, 1:8) = hex8_natural/sqrt(3.0_dp)
       points(:, 9) = 0
       allocate (is_bad(mesh%n_elements))
       do element = 1, mesh%n_elements

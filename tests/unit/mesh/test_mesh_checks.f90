@@ -71,7 +71,8 @@ contains
    !> Corner (2, 1, 1) of element 2 (its local node 7, the cube [1,2]x[0,1]^2) pulled to
    !> (1.1, 0.1, 0.1): by hand, at that corner dx/dxi = (x7 - x8)/2, dx/deta = (x7 - x6)/2,
    !> dx/dzeta = (x7 - x3)/2 give det = det[(.1,-.9,-.9), (-.9,.1,-.9), (-.9,-.9,.1)]/8
-   !> = -1.70/8 < 0, while the centre stays positive: only a corner check catches it.
+   !> = -1.70/8 < 0, while the centre stays positive: the Gauss point beside that corner
+   !> is negative too, so the check (Gauss points and centre) flags the element.
    subroutine test_concave_corner(error)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t) :: mesh
