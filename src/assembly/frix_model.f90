@@ -10,12 +10,13 @@ module frix_model
    use frix_mesh, only: mesh_t
    use frix_material, only: material_slot_t
    use frix_element, only: element_slot_t, kinematics_linear
+   use frix_contact_parameters, only: contact_parameters_t
    implicit none
    private
 
    public :: model_t, element_block_t, dirichlet_t, nodal_force_t, pressure_load_t
    public :: body_force_t, load_curve_t, step_t, solver_controls_t, results_request_t
-   public :: history_request_t, curve_factor
+   public :: history_request_t, curve_factor, contact_pair_t
    public :: solver_auto, solver_cholmod, solver_umfpack
 
    integer, parameter :: solver_auto = 0     !! CHOLMOD if the tangent is symmetric, else UMFPACK
@@ -99,6 +100,19 @@ module frix_model
       type(history_request_t), allocatable :: history(:)
    end type results_request_t
 
+   !> A contact pair: the nodes of the slave surface against the faces of the master surface
+   !> (node-to-segment) or against a rigid plane. See docs/contact.md.
+   type :: contact_pair_t
+      integer :: id = 0
+      integer :: slave_surface = 0          !! index into model%mesh%surfaces
+      integer :: master_surface = 0         !! index into model%mesh%surfaces; 0: rigid plane
+      real(dp) :: plane_point(3) = 0.0_dp   !! rigid plane: a point of it
+      real(dp) :: plane_normal(3) = 0.0_dp  !! rigid plane: unit normal out of the rigid body
+      type(contact_parameters_t) :: parameters  !! EPSN, EPST, gap tolerance, friction law
+      integer :: passes = 1                 !! 2: also the master's nodes against the slave's faces
+      integer :: line = 0                   !! deck line
+   end type contact_pair_t
+
    type :: model_t
       character(len=:), allocatable :: deck_path       !! as given on the command line
       character(len=:), allocatable :: title           !! the deck's header comment lines
@@ -112,6 +126,7 @@ module frix_model
       type(body_force_t), allocatable :: body_forces(:)
       type(load_curve_t), allocatable :: curves(:)
       type(step_t), allocatable :: steps(:)
+      type(contact_pair_t), allocatable :: contact_pairs(:)
       type(solver_controls_t) :: controls
       type(results_request_t) :: results
    end type model_t

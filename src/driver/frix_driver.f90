@@ -22,6 +22,8 @@ module frix_driver
    use frix_external_loads, only: prescribed_displacements
    use frix_support_check, only: check_rigid_body_support
    use frix_hdf5_results, only: read_restart
+   use frix_contact_assembly, only: commit_contact
+   use frix_mesh, only: hex8_face_nodes
    implicit none
    private
 
@@ -63,7 +65,7 @@ contains
       call setup_newton(model, context, error)
       if (allocated(error)) return
       call prescribed_displacements(model, 0.0_dp, context%fixed, context%prescribed)
-      call check_rigid_body_support(model, context%fixed, error)
+      call check_rigid_body_support(model, context%fixed, error, contact_nodes(model))
       if (allocated(error)) return
       context%quiet = options%quiet
       first_step = 1
@@ -162,6 +164,7 @@ contains
          if (report%converged) then
             increment = increment + 1
             call commit_state(state)
+            if (context%has_contact) call commit_contact(context%contact)
             call output%write_increment(model, step, increment, state, context, report, error)
             if (allocated(error)) return
             if (size_now < nominal .and. report%iterations <= max_iterations/3) &
@@ -259,6 +262,26 @@ contains
          if (clean(1:2) == './') clean = clean(3:)
       end if
    end function canonical
+
+   !> Nodes of the surfaces named in contact pairs (bodies held by contact).
+   function contact_nodes(model) result(in_contact)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: in_contact(:)
+      integer :: p, k, surface
+      allocate (in_contact(model%mesh%n_nodes), source=.false.)
+      if (.not. allocated(model%contact_pairs)) return
+      do p = 1, size(model%contact_pairs)
+         do surface = 1, size(model%mesh%surfaces)
+            if (surface /= model%contact_pairs(p)%slave_surface .and. &
+                surface /= model%contact_pairs(p)%master_surface) cycle
+            associate (faces => model%mesh%surfaces(surface))
+               do k = 1, size(faces%elements)
+                  in_contact(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(k)), faces%elements(k))) = .true.
+               end do
+            end associate
+         end do
+      end do
+   end function contact_nodes
 
    !> A pseudo time with 10 significant digits.
    pure function time_text(time) result(text)

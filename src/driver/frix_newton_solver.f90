@@ -18,6 +18,8 @@ module frix_newton_solver
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
+   use frix_contact_assembly, only: contact_system_t, setup_contact, search_contact, assemble_contact, &
+                                    contact_counts
    implicit none
    private
 
@@ -33,6 +35,8 @@ module frix_newton_solver
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
       real(dp), allocatable :: reactions(:) !! fint - fext on constrained equations, 0 elsewhere
       logical :: quiet = .false.
+      logical :: has_contact = .false.
+      type(contact_system_t) :: contact     !! contact search, slip history, contact assembly
       real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
@@ -45,6 +49,8 @@ module frix_newton_solver
       real(dp) :: residual_norms(0:200) = 0.0_dp   !! ||r|| after each iteration (0: before the first solve)
       real(dp) :: relative_norms(0:200) = 0.0_dp   !! ||r|| / reference
       real(dp) :: energy_norms(0:200) = 0.0_dp     !! |du . r| of the correction leading there
+      integer :: active(0:200) = 0                 !! contact: slave nodes in contact
+      integer :: slipping(0:200) = 0               !! contact: slave nodes slipping
       character(len=:), allocatable :: failure     !! why it did not converge
    end type newton_report_t
 
@@ -63,6 +69,12 @@ contains
       call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
       if (allocated(error)) return
       context%symmetric = .not. has_follower_loads(model)
+      if (allocated(model%contact_pairs)) context%has_contact = size(model%contact_pairs) > 0
+      if (context%has_contact) then
+         call setup_contact(model, context%contact)
+         ! the slip branch of Coulomb friction makes the tangent unsymmetric
+         if (context%contact%frictional) context%symmetric = .false.
+      end if
       select case (model%controls%linear_solver)
       case (solver_cholmod)
          call create_linear_solver('CHOLMOD', context%solver, error)
@@ -108,11 +120,17 @@ contains
 
       do iteration = 0, min(max_iterations, ubound(report%residual_norms, 1))
          start = wall_clock_seconds()
+         if (context%has_contact) then
+            call search_contact(model, context%contact, state%u, context%matrix, error)
+            if (allocated(error)) return
+         end if
          call assemble_internal(model, state, context%fint, inner_error, matrix=context%matrix)
          if (allocated(inner_error)) then
             report%failure = inner_error%message
             return
          end if
+         if (context%has_contact) &
+            call assemble_contact(model, context%contact, state%u, context%fint, context%matrix)
          call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
          context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
          context%n_assemblies = context%n_assemblies + 1
@@ -131,8 +149,12 @@ contains
          report%residual_norms(iteration) = residual_norm
          report%relative_norms(iteration) = residual_norm/reference
          report%energy_norms(iteration) = energy
+         if (context%has_contact) then
+            call contact_counts(context%contact, report%active(iteration), report%slipping(iteration))
+         end if
          if (.not. context%quiet) call print_progress(label, time, iteration, residual_norm, &
-                                                      residual_norm/reference, energy)
+                                                      residual_norm/reference, energy, context%has_contact, &
+                                                      report%active(iteration), report%slipping(iteration))
 
          if (residual_norm /= residual_norm) then
             report%failure = 'the residual is not a number'
@@ -224,12 +246,20 @@ contains
       if (scale == 0.0_dp) scale = 1.0_dp
    end function mean_absolute_diagonal
 
-   subroutine print_progress(label, time, iteration, residual_norm, relative_norm, energy)
+   subroutine print_progress(label, time, iteration, residual_norm, relative_norm, energy, &
+                             contact, active, slipping)
       character(len=*), intent(in) :: label
       real(dp), intent(in) :: time, residual_norm, relative_norm, energy
-      integer, intent(in) :: iteration
-      write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",es10.3,"  |r|/ref=",es10.3,'// &
-             '"  energy=",es10.3)') label, time, iteration, residual_norm, relative_norm, energy
+      integer, intent(in) :: iteration, active, slipping
+      logical, intent(in) :: contact
+      if (contact) then
+         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",es10.3,"  |r|/ref=",es10.3,'// &
+                '"  energy=",es10.3,"  contact",i6,"  slip",i6)') label, time, iteration, residual_norm, &
+            relative_norm, energy, active, slipping
+      else
+         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",es10.3,"  |r|/ref=",es10.3,'// &
+                '"  energy=",es10.3)') label, time, iteration, residual_norm, relative_norm, energy
+      end if
       flush (6)
    end subroutine print_progress
 end module frix_newton_solver

@@ -15,6 +15,8 @@ module frix_results_output
    use frix_history_writer, only: history_t
    use frix_pos3d_writer, only: pos3d_writer_t
    use frix_hdf5_results, only: hdf5_results_t
+   use frix_strings, only: to_string
+   use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels
    implicit none
    private
 
@@ -32,6 +34,7 @@ module frix_results_output
       logical :: hdf5_open = .false.
       logical :: has_history = .false.
       logical :: pos3d_open = .false.
+      integer :: contact_unit = -1        !! <base>_contact.csv
    contains
       procedure :: open => output_open
       procedure :: write_increment => output_write_increment
@@ -71,6 +74,12 @@ contains
          if (allocated(error)) return
          self%hdf5_open = .true.
       end if
+      if (allocated(model%contact_pairs)) then
+         if (size(model%contact_pairs) > 0) then
+            call open_contact_csv(self, base, error)
+            if (allocated(error)) return
+         end if
+      end if
       if (allocated(model%results%history)) then
          if (size(model%results%history) > 0) then
             associate (requests => model%results%history)
@@ -96,6 +105,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: gp_stress(:, :, :), gp_strain(:, :, :), fint(:)
       real(dp), allocatable :: displacement(:, :), reaction(:, :), norms(:, :)
+      real(dp), allocatable :: pressure(:), traction(:, :), gap(:), status(:), slip(:), shear(:)
       logical :: last_of_step, wanted
       integer :: n_nodes
       character(len=1), allocatable :: no_names(:)
@@ -109,6 +119,12 @@ contains
       if (self%has_history) then
          call self%history%append(step, increment, state%time, displacement, reaction, error)
          if (allocated(error)) return
+      end if
+      if (context%has_contact) then
+         call write_contact_csv(self, model, context, step, increment, state%time, displacement, error)
+         if (allocated(error)) return
+         call contact_nodal_fields(context%contact, n_nodes, pressure, traction, gap, status, slip)
+         shear = norm2(traction, dim=1)
       end if
       last_of_step = abs(state%time - real(step, dp)) < 1.0e-12_dp
       wanted = mod(increment, max(1, model%results%every)) == 0 .or. last_of_step
@@ -127,6 +143,10 @@ contains
          if (allocated(error)) return
          call self%listing%write_reactions(model%mesh, reaction, reshape(context%fixed, [3, n_nodes]), error)
          if (allocated(error)) return
+         if (context%has_contact) then
+            call write_contact_listing(self, model, context, error)
+            if (allocated(error)) return
+         end if
       end if
 
       if (model%results%vtk .or. model%results%pos3d .or. model%results%hdf5) then
@@ -136,18 +156,38 @@ contains
          if (allocated(error)) return
       end if
       if (model%results%vtk) then
+         if (context%has_contact) then
+            call self%vtk%add_point_field('contact_pressure', reshape(pressure, [1, n_nodes]))
+            call self%vtk%add_point_field('contact_traction', traction)
+            call self%vtk%add_point_field('contact_gap', reshape(gap, [1, n_nodes]))
+            call self%vtk%add_point_field('contact_status', reshape(status, [1, n_nodes]))
+            call self%vtk%add_point_field('contact_slip', reshape(slip, [1, n_nodes]))
+         end if
          call self%vtk%write_increment(model%mesh, step, increment, state%time, displacement, &
                                        reaction, gp_stress, gp_strain, error)
          if (allocated(error)) return
       end if
       if (self%hdf5_open) then
+         if (context%has_contact) then
+            call self%hdf5%add_contact_array('pressure', pressure)
+            call self%hdf5%add_contact_array('traction', traction)
+            call self%hdf5%add_contact_array('gap', gap)
+            call self%hdf5%add_contact_array('status', status)
+            call self%hdf5%add_contact_array('slip', slip)
+         end if
          call self%hdf5%write_increment(step, increment, state%time, displacement, reaction, gp_stress, &
                                         gp_strain, state%committed_alpha, state%committed_history, error)
          if (allocated(error)) return
       end if
       if (model%results%pos3d) then
-         allocate (no_names(0), no_scalars(0, n_nodes))
-         call self%pos3d%add_step(state%time, displacement, gp_stress, no_names, no_scalars, error)
+         if (context%has_contact) then
+            call self%pos3d%add_step(state%time, displacement, gp_stress, &
+                                     [character(len=16) :: 'CONTACT_PRESSURE', 'CONTACT_SHEAR'], &
+                                     transpose(reshape([pressure, shear], [n_nodes, 2])), error)
+         else
+            allocate (no_names(0), no_scalars(0, n_nodes))
+            call self%pos3d%add_step(state%time, displacement, gp_stress, no_names, no_scalars, error)
+         end if
          if (allocated(error)) return
       end if
    end subroutine output_write_increment
@@ -176,6 +216,67 @@ contains
       self%pos3d_open = .true.
    end subroutine open_pos3d
 
+   !> `<base>_contact.csv`: one row per slave node and converged increment.
+   subroutine open_contact_csv(self, base, error)
+      class(results_output_t), intent(inout) :: self
+      character(len=*), intent(in) :: base
+      type(error_t), allocatable, intent(out) :: error
+      integer :: stat
+      open (newunit=self%contact_unit, file=base//'_contact.csv', status='replace', action='write', &
+            iostat=stat)
+      if (stat /= 0) then
+         self%contact_unit = -1
+         call fatal_error(error, 'frix: cannot open '//base//'_contact.csv')
+         return
+      end if
+      write (self%contact_unit, '(a)') 'step,increment,time,pair,pass,node,x,y,z,gap,pressure,'// &
+         'traction_x,traction_y,traction_z,slip,status'
+   end subroutine open_contact_csv
+
+   subroutine write_contact_csv(self, model, context, step, increment, time, displacement, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(in) :: context
+      integer, intent(in) :: step, increment
+      real(dp), intent(in) :: time, displacement(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: nodes(:)
+      real(dp), allocatable :: values(:, :)
+      integer :: p, i, pair, stat
+      do p = 1, size(context%contact%passes)
+         call contact_pass_table(context%contact, p, pair, nodes, values)
+         do i = 1, size(nodes)
+            write (self%contact_unit, '(i0,",",i0,",",es24.16e3,",",i0,",",i0,",",i0,9(",",es24.16e3),",",i0)', &
+                   iostat=stat) step, increment, time, model%contact_pairs(pair)%id, p, &
+               model%mesh%node_ids(nodes(i)), model%mesh%coords(:, nodes(i)) + displacement(:, nodes(i)), &
+               values(1:6, i), nint(values(7, i))
+            if (stat /= 0) then
+               call fatal_error(error, 'frix: cannot write the contact CSV file')
+               return
+            end if
+         end do
+      end do
+      flush (self%contact_unit)
+   end subroutine write_contact_csv
+
+   !> One listing block per contact pass: `CONTACT PAIR <id> PASS <p>`, a row per slave node.
+   subroutine write_contact_listing(self, model, context, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(in) :: context
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: nodes(:)
+      real(dp), allocatable :: values(:, :)
+      integer :: p, pair
+      do p = 1, size(context%contact%passes)
+         call contact_pass_table(context%contact, p, pair, nodes, values)
+         call self%listing%write_table('CONTACT PAIR '//to_string(model%contact_pairs(pair)%id)//' PASS '// &
+                                       to_string(p), 'NODE', contact_table_labels, model%mesh%node_ids(nodes), &
+                                       values, error)
+         if (allocated(error)) return
+      end do
+   end subroutine write_contact_listing
+
    subroutine output_close(self, error)
       class(results_output_t), intent(inout) :: self
       type(error_t), allocatable, intent(inout) :: error
@@ -184,6 +285,7 @@ contains
       if (self%has_history) call self%history%close(close_error)
       if (self%pos3d_open) call self%pos3d%close(close_error)
       if (self%hdf5_open) call self%hdf5%close(close_error)
+      if (self%contact_unit /= -1) close (self%contact_unit)
       if (allocated(close_error) .and. .not. allocated(error)) call move_alloc(close_error, error)
    end subroutine output_close
 end module frix_results_output

@@ -21,7 +21,10 @@ module frix_deck_reader
    use frix_material_registry, only: create_material
    use frix_element, only: kinematics_linear, kinematics_total_lagrangian
    use frix_element_registry, only: create_element
-   use frix_model, only: model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t, &
+   use frix_friction_law, only: friction_law_t
+   use frix_friction_law_registry, only: create_friction_law
+   use frix_contact_parameters, only: new_contact_parameters
+   use frix_model, only: contact_pair_t, model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t, &
                          load_curve_t, step_t, history_request_t, solver_auto, solver_cholmod, &
                          solver_umfpack
    use frix_text_scanner, only: text_scanner_t, open_text_file
@@ -37,14 +40,14 @@ module frix_deck_reader
 
    integer, parameter :: name_length = 20
    !> Known sections; their index is the processing order (see the module comment).
-   character(len=name_length), parameter :: deck_section_names(16) = [character(len=name_length) :: &
+   character(len=name_length), parameter :: deck_section_names(17) = [character(len=name_length) :: &
       'PROBLEM TYP', 'STATIC', 'LOAD CURVES', 'MATERIALS', 'MESH FILE', 'NODE COORDS', &
       'STRUCTURE ELEMENTS', 'MESH BLOCK', 'NODE SETS', 'SURFACES', 'DIRICHLET CONDITIONS', &
-      'NEUMANN CONDITIONS', 'BODY FORCE', 'STEPS', 'RESULTS', 'END']
+      'NEUMANN CONDITIONS', 'BODY FORCE', 'STEPS', 'RESULTS', 'CONTACT CONDITIONS', 'END']
    integer, parameter :: s_problem = 1, s_static = 2, s_curves = 3, s_materials = 4, &
                          s_mesh_file = 5, s_node_coords = 6, s_elements = 7, s_mesh_block = 8, &
                          s_node_sets = 9, s_surfaces = 10, s_dirichlet = 11, s_neumann = 12, &
-                         s_body_force = 13, s_steps = 14, s_results = 15, s_end = 16
+                         s_body_force = 13, s_steps = 14, s_results = 15, s_contact = 16, s_end = 17
 
    !> Relative tolerance of BOX selections, times the diagonal of the model's bounding box.
    real(dp), parameter :: box_tolerance = 1.0e-9_dp
@@ -133,6 +136,7 @@ contains
       call read_dirichlet(reader, model)
       call read_neumann(reader, model)
       call read_body_forces(reader, model)
+      call read_contact_pairs(reader, model)
       call read_steps(reader, model)
       call read_pairs_section(reader, model, s_results)
       call validate_model(reader, model)
@@ -1680,6 +1684,162 @@ contains
    end subroutine read_body_forces
 
    ! ---- STEPS ----------------------------------------------------------------------------
+
+   !> CONTACT CONDITIONS: one pair per line,
+   !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE [POINT x y z NORMAL nx ny nz]
+   !>  EPSN <eps_N> [EPST <eps_T>] [MU <mu>] [LAW Coulomb|Frictionless] [GAPTOL <g>] [PASSES 1|2]`.
+   !> MU gives Coulomb friction (MU 0 or LAW Frictionless: frictionless, EPST not needed).
+   subroutine read_contact_pairs(reader, model)
+      type(reader_t), intent(inout) :: reader
+      type(model_t), intent(inout) :: model
+      type(contact_pair_t) :: pair
+      class(friction_law_t), allocatable :: law
+      type(error_t), allocatable :: law_error
+      character(len=:), allocatable :: name, word, law_keyword
+      character(len=8), allocatable :: law_names(:)
+      real(dp), allocatable :: law_values(:)
+      real(dp) :: eps_n, eps_t, gap_tolerance, mu, length
+      integer :: i, position, k, law_token, passes
+      logical :: ok, has_eps_n, has_eps_t, has_mu, has_point, has_normal
+      allocate (model%contact_pairs(0))
+      do i = reader%first(s_contact), reader%last(s_contact)
+         associate (line => reader%lines(i))
+            if (line%n_tokens() == 0) cycle
+            ok = .true.
+            position = 1
+            call reader%expect_keyword(line, position, 'PAIR', ok)
+            call reader%take_integer(line, position, 'a pair id', pair%id, ok)
+            if (.not. ok) cycle
+            do k = 1, size(model%contact_pairs)
+               if (model%contact_pairs(k)%id == pair%id) then
+                  call reader%report(line, 2, 'duplicate contact pair id')
+                  ok = .false.
+               end if
+            end do
+            call reader%expect_keyword(line, position, 'SLAVE', ok)
+            call reader%take_word(line, position, 'a slave surface name', name, ok)
+            if (ok) then
+               pair%slave_surface = model%mesh%find_surface(name)
+               if (pair%slave_surface == 0) then
+                  if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'unknown surface')
+                  ok = .false.
+               end if
+            end if
+            call reader%expect_keyword(line, position, 'MASTER', ok)
+            call reader%take_word(line, position, 'a master surface name or RIGID_PLANE', name, ok)
+            pair%master_surface = 0
+            if (ok .and. to_upper(name) /= 'RIGID_PLANE') then
+               pair%master_surface = model%mesh%find_surface(name)
+               if (pair%master_surface == 0) then
+                  if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'unknown surface')
+                  ok = .false.
+               else if (pair%master_surface == pair%slave_surface) then
+                  call reader%report(line, position - 1, 'a surface cannot be in contact with itself')
+                  ok = .false.
+               end if
+            end if
+            has_eps_n = .false.; has_eps_t = .false.; has_mu = .false.
+            has_point = .false.; has_normal = .false.
+            eps_n = 0.0_dp; eps_t = 0.0_dp; mu = 0.0_dp; gap_tolerance = 0.0_dp
+            passes = 1
+            law_keyword = ''
+            law_token = 0
+            pair%plane_point = 0.0_dp
+            pair%plane_normal = 0.0_dp
+            do while (ok .and. position <= line%n_tokens())
+               word = line%keyword(position)
+               position = position + 1
+               select case (word)
+               case ('POINT')
+                  call reader%take_reals(line, position, 'a coordinate', pair%plane_point, ok)
+                  has_point = ok
+               case ('NORMAL')
+                  call reader%take_reals(line, position, 'a normal component', pair%plane_normal, ok)
+                  has_normal = ok
+               case ('EPSN')
+                  call reader%take_real(line, position, 'EPSN', eps_n, ok)
+                  call require(reader, ok, eps_n > 0.0_dp, line, position - 1, 'EPSN must be positive')
+                  has_eps_n = ok
+               case ('EPST')
+                  call reader%take_real(line, position, 'EPST', eps_t, ok)
+                  call require(reader, ok, eps_t > 0.0_dp, line, position - 1, 'EPST must be positive')
+                  has_eps_t = ok
+               case ('MU')
+                  call reader%take_real(line, position, 'MU', mu, ok)
+                  call require(reader, ok, mu >= 0.0_dp, line, position - 1, 'MU must not be negative')
+                  has_mu = ok
+               case ('GAPTOL')
+                  call reader%take_real(line, position, 'GAPTOL', gap_tolerance, ok)
+                  call require(reader, ok, gap_tolerance >= 0.0_dp, line, position - 1, &
+                               'GAPTOL must not be negative')
+               case ('PASSES')
+                  call reader%take_integer(line, position, 'PASSES', passes, ok)
+                  call require(reader, ok, passes == 1 .or. passes == 2, line, position - 1, &
+                               'PASSES must be 1 or 2')
+               case ('LAW')
+                  law_token = position
+                  call reader%take_word(line, position, 'a friction law', law_keyword, ok)
+               case default
+                  call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
+                                     'EPSN, EPST, MU, LAW, GAPTOL or PASSES)')
+                  ok = .false.
+               end select
+            end do
+            if (.not. ok) cycle
+            if (.not. has_eps_n) then
+               call reader%report(line, 1, 'contact pair without EPSN (normal penalty)')
+               cycle
+            end if
+            if (pair%master_surface == 0) then
+               if (.not. (has_point .and. has_normal)) then
+                  call reader%report(line, 1, 'a RIGID_PLANE master needs POINT x y z and NORMAL nx ny nz')
+                  cycle
+               end if
+               length = norm2(pair%plane_normal)
+               if (length == 0.0_dp) then
+                  call reader%report(line, 1, 'the rigid plane''s NORMAL is zero')
+                  cycle
+               end if
+               pair%plane_normal = pair%plane_normal/length
+               if (passes == 2) then
+                  call reader%report(line, 1, 'PASSES 2 needs a deformable master surface')
+                  cycle
+               end if
+            else if (has_point .or. has_normal) then
+               call reader%report(line, 1, 'POINT and NORMAL belong to a RIGID_PLANE master')
+               cycle
+            end if
+            if (len(law_keyword) == 0) law_keyword = merge('COULOMB     ', 'FRICTIONLESS', has_mu .and. mu > 0.0_dp)
+            if (to_upper(law_keyword) == 'COULOMB') then
+               law_names = [character(len=8) :: 'MU']
+               law_values = [mu]
+            else
+               allocate (law_names(0), law_values(0))
+            end if
+            call create_friction_law(trim(law_keyword), law_names, law_values, law, law_error)
+            deallocate (law_names, law_values)
+            if (allocated(law_error)) then
+               call reader%report(line, max(1, law_token), law_error%message)
+               deallocate (law_error)
+               cycle
+            end if
+            if (.not. law%frictionless() .and. .not. has_eps_t) then
+               call reader%report(line, 1, 'a contact pair with friction needs EPST (tangential penalty)')
+               cycle
+            end if
+            call new_contact_parameters(eps_n, eps_t, gap_tolerance, law, pair%parameters, law_error)
+            if (allocated(law_error)) then
+               call reader%report(line, 1, law_error%message)
+               deallocate (law_error)
+               cycle
+            end if
+            pair%passes = passes
+            pair%line = i
+            model%contact_pairs = [model%contact_pairs, pair]
+         end associate
+      end do
+   end subroutine read_contact_pairs
+
 
    !> `STEP <n> NUMSTEP <k> [CONTROL Load|Displacement] [MAXITER m]`, numbered 1, 2, ...
    subroutine read_steps(reader, model)

@@ -1,0 +1,477 @@
+!> Contact in the global system: the contact search (which master face each slave node
+!> touches), the slip history of every slave node, and the assembly of the node-to-segment
+!> contributions of src/contact/frix_contact_kernel.f90 into the internal force and tangent.
+!>
+!> Each contact pair of the deck gives one pass (slave nodes against master faces or a rigid
+!> plane); PASSES 2 adds the reverse pass (the master's nodes against the slave's faces).
+!> Search: at every Newton iteration, each slave node is given the master face whose closest
+!> point (clamped to the face: an edge or corner point when the node lies beyond the face) is
+!> nearest; the current face is kept on ties, so that a node on an edge shared by two faces
+!> does not chatter between them. Candidates come from a uniform bucket grid of the master
+!> faces' current bounding boxes, rebuilt every iteration (linear cost). A node farther above
+!> the master surface than the search band (max(GAPTOL, half the mean master face size)) gets
+!> no face.
+!> Touching nodes (0 <= g <= GAPTOL) carry no force but keep the normal penalty stiffness
+!> eps_N A n n (with the N_a split on the master nodes), so that bodies that touch without
+!> load, as at the start of an analysis, are supported in the first iteration.
+!> Slip history: the anchor (master face, face coordinates) of each slave node is committed
+!> at every converged increment; when a node has moved to another face, its anchor's current
+!> position is projected onto the new face.
+module frix_contact_assembly
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_mesh, only: hex8_face_nodes
+   use frix_model, only: model_t
+   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_surface_load, only: face_area_weights
+   use frix_face_projection, only: face_position, face_normal, closest_point_in_face, &
+                                   face_shape_functions
+   use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
+                                  contact_open, contact_stick, contact_slip
+   implicit none
+   private
+
+   public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
+   public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
+
+   !> One pass: the nodes of a slave surface against the faces of a master surface or a plane.
+   type :: contact_pass_t
+      integer :: pair = 0                      !! index into model%contact_pairs
+      logical :: rigid = .false.               !! master is the pair's rigid plane
+      integer, allocatable :: slave_nodes(:)   !! internal node numbers
+      real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
+      integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
+      real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
+      ! the current iterate
+      integer, allocatable :: face(:)          !! master face of each slave node, 0: none
+      type(contact_point_result_t), allocatable :: result(:)
+      ! the last converged increment
+      integer, allocatable :: anchor_face(:)
+      real(dp), allocatable :: anchor_xi(:, :)     !! (2, n_slave)
+      real(dp), allocatable :: anchor_point(:, :)  !! (3, n_slave), rigid plane
+      logical, allocatable :: has_anchor(:)
+      real(dp), allocatable :: slip(:)             !! accumulated slip (length)
+   end type contact_pass_t
+
+   type :: contact_system_t
+      type(contact_pass_t), allocatable :: passes(:)
+      integer, allocatable :: extra_pairs(:, :)   !! (2, n) node pairs added to the sparse pattern
+      integer :: n_extra = 0
+      logical :: frictional = .false.             !! some pair has friction: unsymmetric tangent
+   end type contact_system_t
+
+   !> Columns of `contact_pass_table` (listing, CSV).
+   character(len=*), parameter :: contact_table_labels(7) = [character(len=10) :: 'GAP', 'PRESSURE', &
+                                                              'TRACTION_X', 'TRACTION_Y', 'TRACTION_Z', &
+                                                              'SLIP', 'STATUS']
+
+   real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
+
+contains
+
+   !> Slave nodes, tributary areas and master faces of every pass.
+   subroutine setup_contact(model, system)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(out) :: system
+      integer :: p, n_passes, k
+      n_passes = 0
+      do p = 1, size(model%contact_pairs)
+         n_passes = n_passes + model%contact_pairs(p)%passes
+      end do
+      allocate (system%passes(n_passes))
+      allocate (system%extra_pairs(2, 0))
+      k = 0
+      do p = 1, size(model%contact_pairs)
+         associate (pair => model%contact_pairs(p))
+            k = k + 1
+            call setup_pass(model, p, pair%slave_surface, pair%master_surface, system%passes(k))
+            if (pair%passes == 2) then
+               k = k + 1
+               call setup_pass(model, p, pair%master_surface, pair%slave_surface, system%passes(k))
+            end if
+            if (.not. pair%parameters%friction%frictionless()) system%frictional = .true.
+         end associate
+      end do
+   end subroutine setup_contact
+
+   subroutine setup_pass(model, pair, slave_surface, master_surface, pass)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: pair, slave_surface, master_surface
+      type(contact_pass_t), intent(out) :: pass
+      integer, allocatable :: position_of(:)
+      real(dp), allocatable :: node_area(:)
+      real(dp) :: coords(3, 4), weights(4), size_sum
+      integer :: k, a, node, n_slave
+      integer :: face_nodes(4)
+
+      pass%pair = pair
+      pass%rigid = master_surface == 0
+      allocate (position_of(model%mesh%n_nodes), source=0)
+      allocate (node_area(model%mesh%n_nodes), source=0.0_dp)
+      n_slave = 0
+      associate (surface => model%mesh%surfaces(slave_surface))
+         do k = 1, size(surface%elements)
+            face_nodes = model%mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), surface%elements(k))
+            coords = model%mesh%coords(:, face_nodes)
+            call face_area_weights(coords, weights)
+            do a = 1, 4
+               node = face_nodes(a)
+               if (position_of(node) == 0) then
+                  n_slave = n_slave + 1
+                  position_of(node) = n_slave
+               end if
+               node_area(node) = node_area(node) + weights(a)
+            end do
+         end do
+      end associate
+      allocate (pass%slave_nodes(n_slave))
+      do node = 1, model%mesh%n_nodes
+         if (position_of(node) > 0) pass%slave_nodes(position_of(node)) = node
+      end do
+      pass%area = node_area(pass%slave_nodes)
+
+      if (pass%rigid) then
+         allocate (pass%faces(4, 0))
+      else
+         associate (surface => model%mesh%surfaces(master_surface))
+            allocate (pass%faces(4, size(surface%elements)))
+            size_sum = 0.0_dp
+            do k = 1, size(surface%elements)
+               pass%faces(:, k) = model%mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), &
+                                                          surface%elements(k))
+               coords = model%mesh%coords(:, pass%faces(:, k))
+               size_sum = size_sum + 0.5_dp*(norm2(coords(:, 3) - coords(:, 1)) + &
+                                             norm2(coords(:, 4) - coords(:, 2)))/sqrt(2.0_dp)
+            end do
+            pass%band = 0.5_dp*size_sum/max(1, size(surface%elements))
+         end associate
+      end if
+      pass%band = max(pass%band, model%contact_pairs(pair)%parameters%gap_tolerance)
+      allocate (pass%face(n_slave), pass%anchor_face(n_slave), source=0)
+      allocate (pass%result(n_slave))
+      allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
+                source=0.0_dp)
+      allocate (pass%has_anchor(n_slave), source=.false.)
+      if (pass%rigid) pass%face = 1   ! every slave node faces the plane
+   end subroutine setup_pass
+
+   !> Assign master faces at displacements u and make sure the sparse pattern holds every
+   !> (slave node, master face node) block; the pattern is rebuilt (a new symbolic analysis
+   !> follows) only when a block is missing.
+   subroutine search_contact(model, system, u, matrix, error)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      real(dp), intent(in) :: u(:)
+      type(sparse_matrix_t), intent(inout) :: matrix
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, i, a, slave
+      logical :: missing
+
+      missing = .false.
+      do p = 1, size(system%passes)
+         if (system%passes(p)%rigid) cycle
+         call assign_faces(model, system%passes(p), u)
+         associate (pass => system%passes(p))
+            do i = 1, size(pass%slave_nodes)
+               if (pass%face(i) == 0) cycle
+               slave = pass%slave_nodes(i)
+               do a = 1, 4
+                  if (matrix%neighbour_index(slave, pass%faces(a, pass%face(i))) == 0) then
+                     call add_extra_pair(system, slave, pass%faces(a, pass%face(i)))
+                     missing = .true.
+                  end if
+               end do
+            end do
+         end associate
+      end do
+      if (missing) then
+         call matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, &
+                                               system%extra_pairs(:, :system%n_extra), error=error)
+         if (allocated(error)) error%message = 'contact: rebuilding the sparse pattern: '//error%message
+      end if
+   end subroutine search_contact
+
+   subroutine add_extra_pair(system, first, second)
+      type(contact_system_t), intent(inout) :: system
+      integer, intent(in) :: first, second
+      integer, allocatable :: grown(:, :)
+      if (system%n_extra == size(system%extra_pairs, 2)) then
+         allocate (grown(2, max(64, 2*system%n_extra)))
+         grown(:, :system%n_extra) = system%extra_pairs(:, :system%n_extra)
+         call move_alloc(grown, system%extra_pairs)
+      end if
+      system%n_extra = system%n_extra + 1
+      system%extra_pairs(:, system%n_extra) = [first, second]
+   end subroutine add_extra_pair
+
+   !> The nearest master face of every slave node of a deformable pass (bucket grid search).
+   subroutine assign_faces(model, pass, u)
+      type(model_t), intent(in) :: model
+      type(contact_pass_t), intent(inout) :: pass
+      real(dp), intent(in) :: u(:)
+      real(dp), allocatable :: lower(:, :), upper(:, :)
+      integer, allocatable :: cell_start(:), cell_faces(:), counts(:)
+      real(dp) :: origin(3), cell_size, x_face(3, 4), x_slave(3), xi(2), distance, best
+      real(dp) :: gap, closest(3)
+      integer :: n_cells(3), f, i, c, k, best_face, cell(3), lo(3), hi(3), ix, iy, iz
+      logical :: fixed(2)
+
+      associate (faces => pass%faces)
+         if (size(faces, 2) == 0) then
+            pass%face = 0
+            return
+         end if
+         allocate (lower(3, size(faces, 2)), upper(3, size(faces, 2)))
+         do f = 1, size(faces, 2)
+            x_face = current_face(model, u, faces(:, f))
+            lower(:, f) = minval(x_face, dim=2) - pass%band
+            upper(:, f) = maxval(x_face, dim=2) + pass%band
+         end do
+         origin = minval(lower, dim=2)
+         cell_size = max(maxval(upper - lower), maxval(maxval(upper, dim=2) - origin)/200, tiny(1.0_dp))
+         n_cells = max(1, min(ceiling((maxval(upper, dim=2) - origin)/cell_size), 200))
+         ! faces per cell as compressed rows: count, prefix sums, fill
+         allocate (counts(product(n_cells)), source=0)
+         do f = 1, size(faces, 2)
+            lo = cell_of(lower(:, f))
+            hi = cell_of(upper(:, f))
+            do iz = lo(3), hi(3)
+               do iy = lo(2), hi(2)
+                  do ix = lo(1), hi(1)
+                     c = ix + n_cells(1)*((iy - 1) + n_cells(2)*(iz - 1))
+                     counts(c) = counts(c) + 1
+                  end do
+               end do
+            end do
+         end do
+         allocate (cell_start(product(n_cells) + 1))
+         cell_start(1) = 0
+         do c = 1, product(n_cells)
+            cell_start(c + 1) = cell_start(c) + counts(c)
+         end do
+         allocate (cell_faces(cell_start(product(n_cells) + 1)))
+         counts = cell_start(:product(n_cells))
+         do f = 1, size(faces, 2)
+            lo = cell_of(lower(:, f))
+            hi = cell_of(upper(:, f))
+            do iz = lo(3), hi(3)
+               do iy = lo(2), hi(2)
+                  do ix = lo(1), hi(1)
+                     c = ix + n_cells(1)*((iy - 1) + n_cells(2)*(iz - 1))
+                     counts(c) = counts(c) + 1
+                     cell_faces(counts(c)) = f
+                  end do
+               end do
+            end do
+         end do
+
+         do i = 1, size(pass%slave_nodes)
+            x_slave = model%mesh%coords(:, pass%slave_nodes(i)) + &
+                      u(3*pass%slave_nodes(i) - 2:3*pass%slave_nodes(i))
+            best = huge(1.0_dp)
+            best_face = 0
+            cell = cell_of(x_slave)
+            if (all(x_slave >= origin) .and. all(x_slave <= origin + n_cells*cell_size)) then
+               c = cell(1) + n_cells(1)*((cell(2) - 1) + n_cells(2)*(cell(3) - 1))
+               do k = cell_start(c) + 1, cell_start(c + 1)
+                  f = cell_faces(k)
+                  if (any(x_slave < lower(:, f)) .or. any(x_slave > upper(:, f))) cycle
+                  x_face = current_face(model, u, faces(:, f))
+                  call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
+                  closest = face_position(x_face, xi)
+                  distance = norm2(x_slave - closest)
+                  gap = dot_product(x_slave - closest, face_normal(x_face, xi))
+                  if (gap > pass%band) cycle
+                  if (distance < best*(1.0_dp - tie_tolerance) .or. &
+                      (distance <= best*(1.0_dp + tie_tolerance) .and. f == pass%face(i))) then
+                     best = distance
+                     best_face = f
+                  end if
+               end do
+            end if
+            pass%face(i) = best_face
+         end do
+      end associate
+   contains
+      pure function cell_of(point) result(index3)
+         real(dp), intent(in) :: point(3)
+         integer :: index3(3)
+         index3 = min(n_cells, max(1, int((point - origin)/cell_size) + 1))
+      end function cell_of
+   end subroutine assign_faces
+
+   !> Current coordinates of the 4 nodes of a face.
+   pure function current_face(model, u, nodes) result(x_face)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: u(:)
+      integer, intent(in) :: nodes(4)
+      real(dp) :: x_face(3, 4)
+      integer :: a
+      do a = 1, 4
+         x_face(:, a) = model%mesh%coords(:, nodes(a)) + u(3*nodes(a) - 2:3*nodes(a))
+      end do
+   end function current_face
+
+   !> Add the contact contributions at u to fint and (if present) to the tangent matrix.
+   subroutine assemble_contact(model, system, u, fint, matrix)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      real(dp), intent(in) :: u(:)
+      real(dp), intent(inout) :: fint(:)
+      type(sparse_matrix_t), intent(inout), optional :: matrix
+      real(dp) :: x_slave(3), x_face(3, 4), anchor_xi(2), force(15), tangent(15, 15)
+      real(dp) :: force3(3), tangent3(3, 3), x_anchor(3), v(15), normal(3), shape(4), d_xi(4), d_eta(4)
+      integer :: p, i, a, slave, nodes(5), node
+      logical :: has_anchor, fixed(2)
+
+      do p = 1, size(system%passes)
+         associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
+            do i = 1, size(pass%slave_nodes)
+               slave = pass%slave_nodes(i)
+               x_slave = model%mesh%coords(:, slave) + u(3*slave - 2:3*slave)
+               if (pass%rigid) then
+                  call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
+                                          pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
+                                          pass%result(i), force3, tangent3)
+                  if (pass%result(i)%status == contact_open .and. &
+                      pass%result(i)%gap <= pair%parameters%gap_tolerance) then
+                     ! touching: normal stiffness without force
+                     normal = pair%plane_normal
+                     do a = 1, 3
+                        tangent3(:, a) = tangent3(:, a) + pair%parameters%normal_penalty*pass%area(i)* &
+                                         normal*normal(a)
+                     end do
+                  end if
+                  fint(3*slave - 2:3*slave) = fint(3*slave - 2:3*slave) + force3
+                  if (present(matrix)) call matrix%add_element([slave], tangent3)
+                  cycle
+               end if
+               if (pass%face(i) == 0) then
+                  pass%result(i) = contact_point_result_t()
+                  pass%result(i)%gap = huge(1.0_dp)
+                  cycle
+               end if
+               nodes(1) = slave
+               nodes(2:5) = pass%faces(:, pass%face(i))
+               x_face = current_face(model, u, nodes(2:5))
+               has_anchor = pass%has_anchor(i)
+               anchor_xi = pass%anchor_xi(:, i)
+               if (has_anchor .and. pass%anchor_face(i) /= pass%face(i)) then
+                  ! the node moved to another face: carry its anchor over by projection
+                  x_anchor = face_position(current_face(model, u, pass%faces(:, pass%anchor_face(i))), &
+                                           pass%anchor_xi(:, i))
+                  call closest_point_in_face(x_face, x_anchor, 0.0_dp, anchor_xi, fixed)
+               end if
+               call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), anchor_xi, has_anchor, &
+                                      .true., pass%result(i), force, tangent)
+               if (pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
+                   pass%result(i)%gap <= pair%parameters%gap_tolerance) then
+                  ! touching: normal stiffness eps_N A v v^T, v = [n, -N_a n]
+                  normal = face_normal(x_face, pass%result(i)%xi)
+                  call face_shape_functions(pass%result(i)%xi, shape, d_xi, d_eta)
+                  v(1:3) = normal
+                  do a = 1, 4
+                     v(3*a + 1:3*a + 3) = -shape(a)*normal
+                  end do
+                  do a = 1, 15
+                     tangent(:, a) = tangent(:, a) + pair%parameters%normal_penalty*pass%area(i)*v*v(a)
+                  end do
+               end if
+               do a = 1, 5
+                  node = nodes(a)
+                  fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + force(3*a - 2:3*a)
+               end do
+               if (present(matrix)) call matrix%add_element(nodes, tangent)
+            end do
+         end associate
+      end do
+   end subroutine assemble_contact
+
+   !> Accept the current contact state as converged: anchors and accumulated slip.
+   subroutine commit_contact(system)
+      type(contact_system_t), intent(inout) :: system
+      integer :: p, i
+      do p = 1, size(system%passes)
+         associate (pass => system%passes(p))
+            do i = 1, size(pass%slave_nodes)
+               if (pass%face(i) == 0) then
+                  pass%has_anchor(i) = .false.
+                  cycle
+               end if
+               pass%has_anchor(i) = .true.
+               pass%slip(i) = pass%slip(i) + pass%result(i)%slip_increment
+               if (pass%rigid) then
+                  pass%anchor_point(:, i) = pass%result(i)%new_anchor
+               else
+                  pass%anchor_face(i) = pass%face(i)
+                  pass%anchor_xi(:, i) = pass%result(i)%new_anchor_xi
+               end if
+            end do
+         end associate
+      end do
+   end subroutine commit_contact
+
+   !> Slave nodes in contact (stick or slip) and slipping, over all passes.
+   subroutine contact_counts(system, n_active, n_slipping)
+      type(contact_system_t), intent(in) :: system
+      integer, intent(out) :: n_active, n_slipping
+      integer :: p
+      n_active = 0
+      n_slipping = 0
+      do p = 1, size(system%passes)
+         n_active = n_active + count(system%passes(p)%result%status /= contact_open)
+         n_slipping = n_slipping + count(system%passes(p)%result%status == contact_slip)
+      end do
+   end subroutine contact_counts
+
+   !> Nodal fields for output: pressure p_N (force/area), tangential traction (3), gap,
+   !> status (0 open, 1 stick, 2 slip; -1 not a slave node), accumulated slip. Where a node is
+   !> a slave of several passes, the pass with the larger pressure wins.
+   subroutine contact_nodal_fields(system, n_nodes, pressure, traction, gap, status, slip)
+      type(contact_system_t), intent(in) :: system
+      integer, intent(in) :: n_nodes
+      real(dp), allocatable, intent(out) :: pressure(:), traction(:, :), gap(:), status(:), slip(:)
+      integer :: p, i, node
+      allocate (pressure(n_nodes), gap(n_nodes), slip(n_nodes), source=0.0_dp)
+      allocate (traction(3, n_nodes), source=0.0_dp)
+      allocate (status(n_nodes), source=-1.0_dp)
+      do p = 1, size(system%passes)
+         associate (pass => system%passes(p))
+            do i = 1, size(pass%slave_nodes)
+               node = pass%slave_nodes(i)
+               if (status(node) >= 0.0_dp .and. pressure(node) >= pass%result(i)%pressure) cycle
+               pressure(node) = pass%result(i)%pressure
+               traction(:, node) = pass%result(i)%traction
+               gap(node) = merge(pass%result(i)%gap, 0.0_dp, pass%face(i) > 0)
+               status(node) = real(pass%result(i)%status, dp)
+               slip(node) = pass%slip(i)
+            end do
+         end associate
+      end do
+   end subroutine contact_nodal_fields
+
+   !> The slave nodes of pass `p` and, per node, the columns of `contact_table_labels`: gap
+   !> (length; 0 for a node with no master face), pressure, tangential traction x y z
+   !> (force/area), accumulated slip (length) and status (0 open, 1 stick, 2 slip).
+   !> `pair` is the deck id of the pass's contact pair.
+   subroutine contact_pass_table(system, p, pair_index, nodes, values)
+      type(contact_system_t), intent(in) :: system
+      integer, intent(in) :: p
+      integer, intent(out) :: pair_index
+      integer, allocatable, intent(out) :: nodes(:)
+      real(dp), allocatable, intent(out) :: values(:, :)
+      integer :: i
+      associate (pass => system%passes(p))
+         pair_index = pass%pair
+         nodes = pass%slave_nodes
+         allocate (values(7, size(nodes)))
+         do i = 1, size(nodes)
+            values(1, i) = merge(pass%result(i)%gap, 0.0_dp, pass%face(i) > 0)
+            values(2, i) = pass%result(i)%pressure
+            values(3:5, i) = pass%result(i)%traction
+            values(6, i) = pass%slip(i)
+            values(7, i) = real(pass%result(i)%status, dp)
+         end do
+      end associate
+   end subroutine contact_pass_table
+end module frix_contact_assembly
