@@ -69,3 +69,8 @@ foreach(script plot_history plot_line render_mesh mohr_coulomb)
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/postproc/test_${script}.sh ${FRIX_BIN})
   set_tests_properties(postproc_${script} PROPERTIES LABELS postproc)
 endforeach()
+
+# Contact benchmarks (labels regression;contact, heavier ones also slow).
+foreach(case contact_s1/s1 contact_s4/s4 contact_v5v6/v5v6 contact_s3/s3)
+  include(${CMAKE_CURRENT_SOURCE_DIR}/${case}.cmake OPTIONAL)
+endforeach()
