@@ -74,3 +74,9 @@ endforeach()
 foreach(case contact_s1/s1 contact_s4/s4 contact_v5v6/v5v6 contact_s3/s3)
   include(${CMAKE_CURRENT_SOURCE_DIR}/${case}.cmake OPTIONAL)
 endforeach()
+
+# Loads against closed forms: body force (self-weight column), follower pressure (neo-Hookean
+# cube under hydrostatic follower pressure, total Lagrangian).
+add_test(NAME loads_closed_form COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/loads/check_loads.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/loads)
+set_tests_properties(loads_closed_form PROPERTIES LABELS regression)
