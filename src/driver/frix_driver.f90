@@ -144,7 +144,7 @@ contains
       type(newton_report_t) :: report
       real(dp) :: step_end, nominal, size_now, target_time
       integer :: increment, max_iterations
-      real(dp) :: smallest
+      real(dp) :: smallest, increment_start, previous_time
       character(len=64) :: label
 
       step_end = real(step, dp)
@@ -158,6 +158,8 @@ contains
          target_time = min(state%committed_time + size_now, step_end)
          if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
          write (label, '("step",i3,"  incr",i4)') step, increment + 1
+         increment_start = wall_clock_seconds()
+         previous_time = state%committed_time
          call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
                               report, error)
          if (allocated(error)) return
@@ -167,6 +169,9 @@ contains
             if (context%has_contact) call commit_contact(context%contact)
             call output%write_increment(model, step, increment, state, context, report, error)
             if (allocated(error)) return
+            if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
+                                                       wall_clock_seconds() - increment_start, &
+                                                       report%iterations)
             if (size_now < nominal .and. report%iterations <= max_iterations/3) &
                size_now = min(nominal, growth_factor*size_now)
          else
@@ -262,6 +267,21 @@ contains
          if (clean(1:2) == './') clean = clean(3:)
       end if
    end function canonical
+
+   !> The line closing a converged increment: its wall time and an estimate of the time left,
+   !> extrapolating the pseudo-time rate of this increment to the end of the last step.
+   subroutine print_increment_done(model, time, previous_time, seconds, iterations)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: time, previous_time, seconds
+      integer, intent(in) :: iterations
+      real(dp) :: left, end_time
+      end_time = real(size(model%steps), dp)
+      left = seconds*(end_time - time)/max(time - previous_time, tiny(1.0_dp))
+      write (*, '(2x,"converged in",i3," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
+             '" (",f5.1," %),  about",f10.1," s left")') iterations, seconds, time, end_time, &
+         100.0_dp*time/end_time, left
+      flush (6)
+   end subroutine print_increment_done
 
    !> Nodes of the surfaces named in contact pairs (bodies held by contact).
    function contact_nodes(model) result(in_contact)
