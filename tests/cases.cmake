@@ -80,3 +80,7 @@ endforeach()
 add_test(NAME loads_closed_form COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/loads/check_loads.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/loads)
 set_tests_properties(loads_closed_form PROPERTIES LABELS regression)
+
+# Regression for the first-increment friction defect found by benchmark P2: stick tractions
+# must not depend on the number of increments (bench/p2/check_first_increment_friction.sh).
+include(${PROJECT_SOURCE_DIR}/bench/p2/p2_tests.cmake)

@@ -11,12 +11,14 @@
 !> faces' current bounding boxes, rebuilt every iteration (linear cost). A node farther above
 !> the master surface than the search band (max(GAPTOL, half the mean master face size)) gets
 !> no face.
-!> Touching nodes (0 <= g <= GAPTOL) carry no force but keep the normal penalty stiffness
-!> eps_N A n n (with the N_a split on the master nodes), so that bodies that touch without
-!> load, as at the start of an analysis, are supported in the first iteration.
-!> Slip history: the anchor (master face, face coordinates) of each slave node is committed
-!> at every converged increment; when a node has moved to another face, its anchor's current
-!> position is projected onto the new face.
+!> Touching nodes (0 <= g <= GAPTOL) carry no force but keep the penalty stiffness
+!> A (eps_N n n + eps_T (I - n n)) (eps_T only with friction; split on the master nodes by
+!> N_a), so that bodies that touch without load, as at the start of an analysis, are supported
+!> in the first iteration, also sideways by friction.
+!> Slip history: every slave node starts with the closest point of its reference position as
+!> anchor (master face and face coordinates, or a point of the rigid plane), so friction acts
+!> from the first increment; the anchor is committed at every converged increment; when a node
+!> has moved to another face, its anchor's current position is projected onto the new face.
 module frix_contact_assembly
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -153,7 +155,41 @@ contains
                 source=0.0_dp)
       allocate (pass%has_anchor(n_slave), source=.false.)
       if (pass%rigid) pass%face = 1   ! every slave node faces the plane
+      call initial_anchors(model, pass)
    end subroutine setup_pass
+
+   !> Anchors of the reference configuration: every slave node starts with the closest point
+   !> of its reference position on the master (its foot point on the plane, or on the nearest
+   !> master face within the search band), so that friction acts from the first increment
+   !> and a body held sideways only by friction is supported from the first iteration.
+   subroutine initial_anchors(model, pass)
+      type(model_t), intent(in) :: model
+      type(contact_pass_t), intent(inout) :: pass
+      real(dp), allocatable :: zero(:)
+      real(dp) :: x_slave(3), normal(3)
+      logical :: fixed(2)
+      integer :: i
+      associate (pair => model%contact_pairs(pass%pair))
+         if (pass%rigid) then
+            normal = pair%plane_normal
+            do i = 1, size(pass%slave_nodes)
+               x_slave = model%mesh%coords(:, pass%slave_nodes(i))
+               pass%anchor_point(:, i) = x_slave - dot_product(x_slave - pair%plane_point, normal)*normal
+            end do
+            pass%has_anchor = .true.
+            return
+         end if
+      end associate
+      allocate (zero(3*model%mesh%n_nodes), source=0.0_dp)
+      call assign_faces(model, pass, zero)
+      do i = 1, size(pass%slave_nodes)
+         if (pass%face(i) == 0) cycle
+         call closest_point_in_face(model%mesh%coords(:, pass%faces(:, pass%face(i))), &
+                                    model%mesh%coords(:, pass%slave_nodes(i)), 0.0_dp, pass%anchor_xi(:, i), fixed)
+         pass%anchor_face(i) = pass%face(i)
+         pass%has_anchor(i) = .true.
+      end do
+   end subroutine initial_anchors
 
    !> Assign master faces at displacements u and make sure the sparse pattern holds every
    !> (slave node, master face node) block; the pattern is rebuilt (a new symbolic analysis
@@ -321,11 +357,18 @@ contains
       type(sparse_matrix_t), intent(inout), optional :: matrix
       real(dp) :: x_slave(3), x_face(3, 4), anchor_xi(2), force(15), tangent(15, 15)
       real(dp) :: force3(3), tangent3(3, 3), x_anchor(3), v(15), normal(3), shape(4), d_xi(4), d_eta(4)
-      integer :: p, i, a, slave, nodes(5), node
+      integer :: p, i, a, k, slave, nodes(5), node
       logical :: has_anchor, fixed(2)
+      real(dp) :: touch_normal, touch_tangential, directions(3, 3), weights(3)
+      real(dp), parameter :: identity(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                                       0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
 
       do p = 1, size(system%passes)
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
+            touch_normal = pair%parameters%normal_penalty
+            touch_tangential = 0.0_dp
+            if (.not. pair%parameters%friction%frictionless()) &
+               touch_tangential = pair%parameters%tangential_penalty
             do i = 1, size(pass%slave_nodes)
                slave = pass%slave_nodes(i)
                x_slave = model%mesh%coords(:, slave) + u(3*slave - 2:3*slave)
@@ -335,11 +378,11 @@ contains
                                           pass%result(i), force3, tangent3)
                   if (pass%result(i)%status == contact_open .and. &
                       pass%result(i)%gap <= pair%parameters%gap_tolerance) then
-                     ! touching: normal stiffness without force
+                     ! touching: normal (and, with friction, stick) stiffness without force
                      normal = pair%plane_normal
                      do a = 1, 3
-                        tangent3(:, a) = tangent3(:, a) + pair%parameters%normal_penalty*pass%area(i)* &
-                                         normal*normal(a)
+                        tangent3(:, a) = tangent3(:, a) + pass%area(i)*(touch_normal*normal*normal(a) + &
+                                         touch_tangential*(identity(:, a) - normal*normal(a)))
                      end do
                   end if
                   fint(3*slave - 2:3*slave) = fint(3*slave - 2:3*slave) + force3
@@ -366,15 +409,22 @@ contains
                                       .true., pass%result(i), force, tangent)
                if (pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
                    pass%result(i)%gap <= pair%parameters%gap_tolerance) then
-                  ! touching: normal stiffness eps_N A v v^T, v = [n, -N_a n]
+                  ! touching: stiffness A (eps_N v_n v_n^T + eps_T sum_t v_t v_t^T) without force,
+                  ! v_d = [d, -N_a d] for the normal d = n and two tangents d = t1, t2
                   normal = face_normal(x_face, pass%result(i)%xi)
                   call face_shape_functions(pass%result(i)%xi, shape, d_xi, d_eta)
-                  v(1:3) = normal
-                  do a = 1, 4
-                     v(3*a + 1:3*a + 3) = -shape(a)*normal
-                  end do
-                  do a = 1, 15
-                     tangent(:, a) = tangent(:, a) + pair%parameters%normal_penalty*pass%area(i)*v*v(a)
+                  call tangent_basis(normal, directions(:, 2), directions(:, 3))
+                  directions(:, 1) = normal
+                  weights = [touch_normal, touch_tangential, touch_tangential]
+                  do k = 1, 3
+                     if (weights(k) == 0.0_dp) cycle
+                     v(1:3) = directions(:, k)
+                     do a = 1, 4
+                        v(3*a + 1:3*a + 3) = -shape(a)*directions(:, k)
+                     end do
+                     do a = 1, 15
+                        tangent(:, a) = tangent(:, a) + weights(k)*pass%area(i)*v*v(a)
+                     end do
                   end do
                end if
                do a = 1, 5
@@ -386,6 +436,20 @@ contains
          end associate
       end do
    end subroutine assemble_contact
+
+   !> Two unit vectors completing the unit vector n to an orthonormal basis.
+   pure subroutine tangent_basis(normal, first, second)
+      real(dp), intent(in) :: normal(3)
+      real(dp), intent(out) :: first(3), second(3)
+      if (abs(normal(1)) < 0.9_dp) then
+         first = [0.0_dp, -normal(3), normal(2)]   ! e_x x n
+      else
+         first = [normal(3), 0.0_dp, -normal(1)]   ! e_y x n
+      end if
+      first = first/norm2(first)
+      second = [normal(2)*first(3) - normal(3)*first(2), normal(3)*first(1) - normal(1)*first(3), &
+                normal(1)*first(2) - normal(2)*first(1)]
+   end subroutine tangent_basis
 
    !> Accept the current contact state as converged: anchors and accumulated slip.
    subroutine commit_contact(system)
