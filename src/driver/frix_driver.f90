@@ -96,6 +96,8 @@ contains
       type(newton_context_t), intent(in) :: context
       real(dp), intent(in) :: total_seconds
       character(len=*), parameter :: row = '(a,t40,f12.4)'
+      real(dp) :: analyse, factorize, solve
+      integer :: factorizations
       write (*, '(a,t40,i12)') 'frix: stat equations', context%matrix%n
       write (*, '(a,t40,i12)') 'frix: stat matrix_nonzeros', context%matrix%nnz()
       write (*, '(a,t40,i12)') 'frix: stat factor_nonzeros', context%solver%factor_entries
@@ -103,12 +105,28 @@ contains
       write (*, '(a,t40,i12)') 'frix: stat assemblies', context%n_assemblies
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
-      write (*, row) 'frix: stat analyse_seconds', context%solver%analyse_seconds
-      write (*, row) 'frix: stat factorize_seconds', context%solver%factorize_seconds
-      write (*, row) 'frix: stat solve_seconds', context%solver%solve_seconds
+      analyse = context%solver%analyse_seconds
+      factorize = context%solver%factorize_seconds
+      solve = context%solver%solve_seconds
+      factorizations = context%solver%n_factorizations
+      if (allocated(context%fallback)) then
+         analyse = analyse + context%fallback%analyse_seconds
+         factorize = factorize + context%fallback%factorize_seconds
+         solve = solve + context%fallback%solve_seconds
+         factorizations = factorizations + context%fallback%n_factorizations
+      end if
+      write (*, '(a,t40,i12)') 'frix: stat factorizations_total', factorizations
+      write (*, row) 'frix: stat analyse_seconds', analyse
+      write (*, row) 'frix: stat factorize_seconds', factorize
+      write (*, row) 'frix: stat solve_seconds', solve
       write (*, row) 'frix: stat total_seconds', total_seconds
       write (*, row) 'frix: stat peak_memory_mb', peak_resident_megabytes()
-      write (*, '(a)') 'frix: linear solver '//context%solver%name()
+      if (allocated(context%fallback)) then
+         write (*, '(a,i0,a)') 'frix: linear solver '//context%solver%name()//' (UMFPACK in ', &
+            context%fallback%n_factorizations, ' factorizations where the matrix was not positive definite)'
+      else
+         write (*, '(a)') 'frix: linear solver '//context%solver%name()
+      end if
    end subroutine print_statistics
 
    !> Peak resident set size of this process (VmHWM of /proc/self/status) in MiB; 0 if unknown.

@@ -29,6 +29,8 @@ module frix_newton_solver
    type :: newton_context_t
       type(sparse_matrix_t) :: matrix
       class(linear_solver_t), allocatable :: solver
+      class(linear_solver_t), allocatable :: fallback  !! UMFPACK when CHOLMOD finds K indefinite
+      logical :: use_fallback = .false.                !! for the rest of the current increment
       logical :: symmetric = .true.        !! tangent expected symmetric (no follower loads)
       logical, allocatable :: fixed(:)     !! constrained equations
       real(dp), allocatable :: prescribed(:)
@@ -113,6 +115,7 @@ contains
       real(dp) :: diagonal_scale, start
 
       state%time = time
+      context%use_fallback = .false.
       call prescribed_displacements(model, time, context%fixed, context%prescribed)
       where (context%fixed) state%u = context%prescribed
       correction_norm = huge(1.0_dp)
@@ -197,36 +200,45 @@ contains
       end do
    end subroutine solve_increment
 
-   !> Factorize and solve K du = r. A CHOLMOD failure (matrix not positive definite, as
-   !> past a limit point) is retried once with UMFPACK, which is then kept.
+   !> Factorize and solve K du = r. When CHOLMOD finds the matrix not positive definite (past
+   !> a limit point, or with large penetrations in the first contact iterations), the
+   !> iteration is repeated with UMFPACK, which stays in use until the end of the increment;
+   !> the next increment tries CHOLMOD again. Both keep their symbolic analyses.
    subroutine factorize_and_solve(model, context, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(error_t), allocatable, intent(out) :: error
-      call context%solver%factorize(context%matrix, error)
-      if (allocated(error) .and. context%solver%name() == 'CHOLMOD') then
-         deallocate (error)
-         call context%solver%release()
-         deallocate (context%solver)
-         call create_linear_solver('UMFPACK', context%solver, error)
-         if (allocated(error)) return
+      if (.not. context%use_fallback) then
          call context%solver%factorize(context%matrix, error)
+         if (.not. allocated(error)) then
+            call context%solver%solve(context%matrix, context%residual, context%correction, error)
+            return
+         end if
+         if (context%solver%name() /= 'CHOLMOD') then
+            call describe_singularity(model, context%solver%failed_equation, error)
+            return
+         end if
+         deallocate (error)
+         context%use_fallback = .true.
+         if (.not. allocated(context%fallback)) then
+            call create_linear_solver('UMFPACK', context%fallback, error)
+            if (allocated(error)) return
+         end if
       end if
+      call context%fallback%factorize(context%matrix, error)
       if (allocated(error)) then
-         call describe_singularity(model, context, error)
+         call describe_singularity(model, context%fallback%failed_equation, error)
          return
       end if
-      call context%solver%solve(context%matrix, context%residual, context%correction, error)
+      call context%fallback%solve(context%matrix, context%residual, context%correction, error)
    end subroutine factorize_and_solve
 
    !> Name the node and direction where the factorization broke down.
-   subroutine describe_singularity(model, context, error)
+   subroutine describe_singularity(model, equation, error)
       type(model_t), intent(in) :: model
-      type(newton_context_t), intent(in) :: context
+      integer, intent(in) :: equation   !! where the factorization failed, 0: unknown
       type(error_t), allocatable, intent(inout) :: error
-      integer :: equation
       character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
-      equation = context%solver%failed_equation
       if (equation <= 0) return
       error%message = error%message//new_line('a')// &
                       model%deck_path//': the stiffness matrix is singular at node '// &

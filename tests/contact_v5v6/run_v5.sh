@@ -1,0 +1,25 @@
+#!/bin/bash
+# run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]...
+# V5 contact patch test: run frix on DECK (inputs/v5_contact_patch) in a scratch folder, then
+# v5_patch_check.py on the last increment (quantities and checks: see that script's header).
+set -u
+[ $# -ge 3 ] || { echo "usage: run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]..." >&2; exit 2; }
+frix=$1; deck=$2; upper=$3; shift 3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+name=$(basename "$deck" .dck)
+start=$(date +%s.%N)
+if ! "$frix" "$deck" --out "$work" > "$work/run.log" 2>&1; then
+    echo "run_v5.sh: frix failed on $deck:"; grep -v '^  step' "$work/run.log" | tail -n 20; exit 1
+fi
+awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "run time %.2f s\n", e - s }'
+grep -c '^  step' "$work/run.log" | awk '{ print "residual evaluations (ITER 0, 1, ...):", $1 }'
+args=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --check) args+=(--check "$2"); shift 2 ;;
+        *) echo "run_v5.sh: unknown argument $1" >&2; exit 2 ;;
+    esac
+done
+/usr/bin/python3 "$here/v5_patch_check.py" "$work/$name" --upper "$upper" "${args[@]}"
