@@ -11,10 +11,12 @@
 !> faces' current bounding boxes, rebuilt every iteration (linear cost). A node farther above
 !> the master surface than the search band (max(GAPTOL, half the mean master face size)) gets
 !> no face.
-!> Touching nodes (0 <= g <= GAPTOL) carry no force but keep the penalty stiffness
+!> Touching nodes (0 <= g <= GAPTOL) carry no force but get the penalty stiffness
 !> A (eps_N n n + eps_T (I - n n)) (eps_T only with friction; split on the master nodes by
-!> N_a), so that bodies that touch without load, as at the start of an analysis, are supported
-!> in the first iteration, also sideways by friction.
+!> N_a) in the predictor, the first iteration of each increment, so that bodies that touch
+!> without load, as at the start of an analysis, are supported, also sideways by friction.
+!> Later iterations use the consistent tangent only: a stiffness without force would hold a
+!> node that has to lift off and stall the iterations.
 !> Slip history: every slave node starts with the closest point of its reference position as
 !> anchor (master face and face coordinates, or a point of the rigid plane), so friction acts
 !> from the first increment; the anchor is committed at every converged increment; when a node
@@ -349,20 +351,24 @@ contains
    end function current_face
 
    !> Add the contact contributions at u to fint and (if present) to the tangent matrix.
-   subroutine assemble_contact(model, system, u, fint, matrix)
+   subroutine assemble_contact(model, system, u, fint, matrix, predictor)
       type(model_t), intent(in) :: model
       type(contact_system_t), intent(inout) :: system
       real(dp), intent(in) :: u(:)
       real(dp), intent(inout) :: fint(:)
       type(sparse_matrix_t), intent(inout), optional :: matrix
+      logical, intent(in), optional :: predictor  !! first iteration of an increment: add the touching stiffness
       real(dp) :: x_slave(3), x_face(3, 4), anchor_xi(2), force(15), tangent(15, 15)
       real(dp) :: force3(3), tangent3(3, 3), x_anchor(3), v(15), normal(3), shape(4), d_xi(4), d_eta(4)
       integer :: p, i, a, k, slave, nodes(5), node
       logical :: has_anchor, fixed(2)
       real(dp) :: touch_normal, touch_tangential, directions(3, 3), weights(3)
+      logical :: touching_stiffness
       real(dp), parameter :: identity(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
                                                        0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
 
+      touching_stiffness = .false.
+      if (present(predictor)) touching_stiffness = predictor
       do p = 1, size(system%passes)
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
             touch_normal = pair%parameters%normal_penalty
@@ -376,7 +382,7 @@ contains
                   call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
                                           pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
                                           pass%result(i), force3, tangent3)
-                  if (pass%result(i)%status == contact_open .and. &
+                  if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                       pass%result(i)%gap <= pair%parameters%gap_tolerance) then
                      ! touching: normal (and, with friction, stick) stiffness without force
                      normal = pair%plane_normal
@@ -407,8 +413,8 @@ contains
                end if
                call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), anchor_xi, has_anchor, &
                                       .true., pass%result(i), force, tangent)
-               if (pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
-                   pass%result(i)%gap <= pair%parameters%gap_tolerance) then
+               if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
+                   pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= pair%parameters%gap_tolerance) then
                   ! touching: stiffness A (eps_N v_n v_n^T + eps_T sum_t v_t v_t^T) without force,
                   ! v_d = [d, -N_a d] for the normal d = n and two tangents d = t1, t2
                   normal = face_normal(x_face, pass%result(i)%xi)

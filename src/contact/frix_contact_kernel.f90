@@ -25,7 +25,7 @@ module frix_contact_kernel
    use frix_dual_number, only: dual_t, dual_constant, dual_variable, dual_dot, dual_cross, dual_norm, &
                                operator(+), operator(-), operator(*), operator(/), operator(**)
    use frix_face_projection, only: face_node_xi, face_node_eta, face_shape_functions, face_position, &
-                                   project_onto_face, closest_point_in_face, face_contains
+                                   face_normal, project_onto_face, closest_point_in_face, face_contains
    use frix_contact_parameters, only: contact_parameters_t
    implicit none
    private
@@ -103,9 +103,8 @@ contains
             result%xi = xi_start
             result%gap = huge(1.0_dp)
             if (converged) then
-               call face_shape_functions(xi_start, shape_real, d_xi, d_eta)
-               result%normal = unit(cross(matmul(x_master, d_xi), matmul(x_master, d_eta)))
-               result%gap = dot_product(x_slave - matmul(x_master, shape_real), result%normal)
+               result%normal = face_normal(x_master, xi_start)
+               result%gap = dot_product(x_slave - face_position(x_master, xi_start), result%normal)
             end if
             result%new_anchor_xi = xi_start
             result%new_anchor = face_position(x_master, xi_start)
@@ -329,12 +328,4 @@ contains
       real(dp) :: direction(3)
       direction = vector/norm2(vector)
    end function unit
-
-   pure function cross(left, right) result(product)
-      real(dp), intent(in) :: left(3), right(3)
-      real(dp) :: product(3)
-      product = [left(2)*right(3) - left(3)*right(2), &
-                 left(3)*right(1) - left(1)*right(3), &
-                 left(1)*right(2) - left(2)*right(1)]
-   end function cross
 end module frix_contact_kernel

@@ -15,15 +15,15 @@
 !> at a corner). This module is used by the contact kernel and by the contact search.
 module frix_face_projection
    use frix_kinds, only: dp
+   use frix_vector_algebra, only: cross_product
+   use frix_surface_load, only: face_node_xi, face_node_eta, face_shape_functions
    implicit none
    private
 
-   public :: face_node_xi, face_node_eta
-   public :: face_shape_functions, face_position, face_normal
+   !> Re-exported from frix_surface_load (the one definition of the bilinear face).
+   public :: face_node_xi, face_node_eta, face_shape_functions
+   public :: face_position, face_normal
    public :: project_onto_face, closest_point_in_face, face_contains
-
-   real(dp), parameter :: face_node_xi(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]   !! xi1 of the face nodes
-   real(dp), parameter :: face_node_eta(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]  !! xi2 of the face nodes
 
    integer, parameter :: max_iterations = 50
    !> Newton stops when the step is below this (parent coordinates, i.e. relative to the face
@@ -31,15 +31,6 @@ module frix_face_projection
    real(dp), parameter :: step_tolerance = 1.0e-12_dp
 
 contains
-
-   !> Bilinear shape functions N_a(xi) and their derivatives dN_a/dxi1, dN_a/dxi2.
-   pure subroutine face_shape_functions(xi, shape, d_xi, d_eta)
-      real(dp), intent(in) :: xi(2)
-      real(dp), intent(out) :: shape(4), d_xi(4), d_eta(4)
-      shape = 0.25_dp*(1.0_dp + xi(1)*face_node_xi)*(1.0_dp + xi(2)*face_node_eta)
-      d_xi = 0.25_dp*face_node_xi*(1.0_dp + xi(2)*face_node_eta)
-      d_eta = 0.25_dp*face_node_eta*(1.0_dp + xi(1)*face_node_xi)
-   end subroutine face_shape_functions
 
    !> x(xi) = sum_a N_a(xi) x_a (also for xi outside [-1, 1]^2: the bilinear extrapolation).
    pure function face_position(x_face, xi) result(x)
@@ -58,7 +49,7 @@ contains
       real(dp) :: normal(3)
       real(dp) :: shape(4), d_xi(4), d_eta(4)
       call face_shape_functions(xi, shape, d_xi, d_eta)
-      normal = cross(matmul(x_face, d_xi), matmul(x_face, d_eta))
+      normal = cross_product(matmul(x_face, d_xi), matmul(x_face, d_eta))
       normal = normal/norm2(normal)
    end function face_normal
 
@@ -164,12 +155,4 @@ contains
          end if
       end do
    end subroutine closest_point_in_face
-
-   pure function cross(left, right) result(product)
-      real(dp), intent(in) :: left(3), right(3)
-      real(dp) :: product(3)
-      product = [left(2)*right(3) - left(3)*right(2), &
-                 left(3)*right(1) - left(1)*right(3), &
-                 left(1)*right(2) - left(2)*right(1)]
-   end function cross
 end module frix_face_projection

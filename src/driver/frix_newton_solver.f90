@@ -42,6 +42,7 @@ module frix_newton_solver
       real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
+      integer :: n_backtracks = 0              !! step halvings of the contact line search
    end type newton_context_t
 
    !> What happened in one increment.
@@ -112,7 +113,7 @@ contains
       type(error_t), allocatable :: inner_error
       integer :: iteration
       real(dp) :: residual_norm, reference, correction_norm, u_norm, energy
-      real(dp) :: diagonal_scale, start
+      real(dp) :: diagonal_scale
 
       state%time = time
       context%use_fallback = .false.
@@ -122,32 +123,9 @@ contains
       energy = 0.0_dp
 
       do iteration = 0, min(max_iterations, ubound(report%residual_norms, 1))
-         start = wall_clock_seconds()
-         if (context%has_contact) then
-            call search_contact(model, context%contact, state%u, context%matrix, error)
-            if (allocated(error)) return
-         end if
-         call assemble_internal(model, state, context%fint, inner_error, matrix=context%matrix)
-         if (allocated(inner_error)) then
-            report%failure = inner_error%message
-            return
-         end if
-         if (context%has_contact) &
-            call assemble_contact(model, context%contact, state%u, context%fint, context%matrix)
-         call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
-         context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
-         context%n_assemblies = context%n_assemblies + 1
-         context%residual = context%fext - context%fint
-         where (context%fixed)
-            context%reactions = -context%residual
-            context%residual = 0.0_dp
-         elsewhere
-            context%reactions = 0.0_dp
-         end where
-         residual_norm = norm2(context%residual)
-         reference = max(norm2(merge(context%fext, 0.0_dp, .not. context%fixed)), &
-                         norm2(context%reactions))
-         if (reference == 0.0_dp) reference = 1.0_dp
+         call evaluate_equilibrium(model, context, state, time, .true., residual_norm, reference, &
+                                   report%failure, error, predictor=iteration == 0)
+         if (allocated(error) .or. allocated(report%failure)) return
          report%iterations = iteration
          report%residual_norms(iteration) = residual_norm
          report%relative_norms(iteration) = residual_norm/reference
@@ -197,8 +175,100 @@ contains
          correction_norm = norm2(context%correction)
          state%u = state%u + context%correction
          context%n_iterations = context%n_iterations + 1
+         if (context%has_contact .and. iteration > 0) then
+            call contact_line_search(model, context, state, time, residual_norm, correction_norm, &
+                                     report%failure, error)
+            if (allocated(error) .or. allocated(report%failure)) return
+         end if
       end do
    end subroutine solve_increment
+
+   !> Internal, contact and external forces at state%u: the residual r = fext - fint on the
+   !> free equations, the reactions on the constrained ones, ||r|| and the reference
+   !> max(||fext||, ||R||); with `with_tangent` also the tangent matrix. `failure` is set when
+   !> an element cannot be evaluated (a smaller increment may cure it), `error` for a failure
+   !> of the contact search.
+   subroutine evaluate_equilibrium(model, context, state, time, with_tangent, residual_norm, reference, &
+                                   failure, error, predictor)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      logical, intent(in) :: with_tangent
+      real(dp), intent(out) :: residual_norm, reference
+      character(len=:), allocatable, intent(inout) :: failure
+      type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: predictor   !! first iteration of the increment
+      type(error_t), allocatable :: element_error
+      real(dp) :: start
+      start = wall_clock_seconds()
+      if (context%has_contact) then
+         call search_contact(model, context%contact, state%u, context%matrix, error)
+         if (allocated(error)) return
+      end if
+      if (with_tangent) then
+         call assemble_internal(model, state, context%fint, element_error, matrix=context%matrix)
+      else
+         call assemble_internal(model, state, context%fint, element_error)
+      end if
+      if (allocated(element_error)) then
+         failure = element_error%message
+         return
+      end if
+      if (with_tangent) then
+         if (context%has_contact) &
+            call assemble_contact(model, context%contact, state%u, context%fint, context%matrix, predictor)
+         call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
+      else
+         if (context%has_contact) call assemble_contact(model, context%contact, state%u, context%fint)
+         call assemble_external(model, time, state%u, context%fext)
+      end if
+      context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
+      context%n_assemblies = context%n_assemblies + 1
+      context%residual = context%fext - context%fint
+      where (context%fixed)
+         context%reactions = -context%residual
+         context%residual = 0.0_dp
+      elsewhere
+         context%reactions = 0.0_dp
+      end where
+      residual_norm = norm2(context%residual)
+      reference = max(norm2(merge(context%fext, 0.0_dp, .not. context%fixed)), norm2(context%reactions))
+      if (reference == 0.0_dp) reference = 1.0_dp
+   end subroutine evaluate_equilibrium
+
+   !> Backtracking after a Newton correction du with contact: when the residual at u + du is
+   !> larger than before the correction (penalty contact overshoots as nodes enter or leave
+   !> contact), the step is halved, u + du/2, u + du/4, ..., at most `max_backtracks` times;
+   !> the last trial is kept in any case. The correction norm reported is the one of the
+   !> accepted step.
+   subroutine contact_line_search(model, context, state, time, previous_norm, correction_norm, &
+                                  failure, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time, previous_norm
+      real(dp), intent(inout) :: correction_norm
+      character(len=:), allocatable, intent(inout) :: failure
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: max_backtracks = 4
+      real(dp) :: trial_norm, reference, fraction
+      integer :: k
+      fraction = 1.0_dp
+      do k = 1, max_backtracks
+         call evaluate_equilibrium(model, context, state, time, .false., trial_norm, reference, failure, error)
+         if (allocated(error)) return
+         if (allocated(failure)) then
+            deallocate (failure)   ! an inverted element: try a shorter step
+         else if (trial_norm <= previous_norm) then
+            return
+         end if
+         fraction = 0.5_dp*fraction
+         state%u = state%u - fraction*context%correction
+         correction_norm = fraction*norm2(context%correction)
+         context%n_backtracks = context%n_backtracks + 1
+      end do
+   end subroutine contact_line_search
 
    !> Factorize and solve K du = r. When CHOLMOD finds the matrix not positive definite (past
    !> a limit point, or with large penetrations in the first contact iterations), the

@@ -13,13 +13,15 @@
 !> d1 = x3 - x1, d2 = x4 - x2 (exact also for a warped face).
 module frix_surface_load
    use frix_kinds, only: dp
+   use frix_vector_algebra, only: cross_product
    implicit none
    private
 
    public :: pressure_load, face_area_weights
+   public :: face_node_xi, face_node_eta, face_shape_functions
 
-   real(dp), parameter :: node_xi(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]
-   real(dp), parameter :: node_eta(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]
+   real(dp), parameter :: face_node_xi(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]   !! xi of the face nodes
+   real(dp), parameter :: face_node_eta(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]  !! eta of the face nodes
    !> 2 x 2 Gauss-Legendre points +-1/sqrt(3), weights 1.
    real(dp), parameter :: gauss_abscissa = 0.57735026918962576451_dp
    real(dp), parameter :: point_xi(4) = gauss_abscissa*[-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]
@@ -59,7 +61,7 @@ contains
       end if
 
       do point = 1, 4
-         call shape_functions(point_xi(point), point_eta(point), shape, d_xi, d_eta)
+         call face_shape_functions([point_xi(point), point_eta(point)], shape, d_xi, d_eta)
          g_xi = matmul(x, d_xi)
          g_eta = matmul(x, d_eta)
          area_vector = cross_product(g_xi, g_eta)
@@ -88,27 +90,21 @@ contains
       integer :: point
       weights = 0.0_dp
       do point = 1, 4
-         call shape_functions(point_xi(point), point_eta(point), shape, d_xi, d_eta)
+         call face_shape_functions([point_xi(point), point_eta(point)], shape, d_xi, d_eta)
          weights = weights + shape*norm2(cross_product(matmul(coords, d_xi), matmul(coords, d_eta)))
       end do
    end subroutine face_area_weights
 
-   !> Bilinear shape functions of the quadrilateral and their parent derivatives.
-   pure subroutine shape_functions(xi, eta, shape, d_xi, d_eta)
-      real(dp), intent(in) :: xi, eta
+   !> Bilinear shape functions N_a(xi) = (1 + xi xi_a)(1 + eta eta_a)/4 of the quadrilateral
+   !> face and their parent derivatives dN_a/dxi, dN_a/deta, at xi = (xi, eta) (also outside
+   !> [-1, 1]^2: the bilinear extrapolation). Used by the contact modules too.
+   pure subroutine face_shape_functions(xi, shape, d_xi, d_eta)
+      real(dp), intent(in) :: xi(2)          !! parent coordinates (xi, eta)
       real(dp), intent(out) :: shape(4), d_xi(4), d_eta(4)
-      shape = 0.25_dp*(1.0_dp + xi*node_xi)*(1.0_dp + eta*node_eta)
-      d_xi = 0.25_dp*node_xi*(1.0_dp + eta*node_eta)
-      d_eta = 0.25_dp*node_eta*(1.0_dp + xi*node_xi)
-   end subroutine shape_functions
-
-   pure function cross_product(left, right) result(product)
-      real(dp), intent(in) :: left(3), right(3)
-      real(dp) :: product(3)
-      product = [left(2)*right(3) - left(3)*right(2), &
-                 left(3)*right(1) - left(1)*right(3), &
-                 left(1)*right(2) - left(2)*right(1)]
-   end function cross_product
+      shape = 0.25_dp*(1.0_dp + xi(1)*face_node_xi)*(1.0_dp + xi(2)*face_node_eta)
+      d_xi = 0.25_dp*face_node_xi*(1.0_dp + xi(2)*face_node_eta)
+      d_eta = 0.25_dp*face_node_eta*(1.0_dp + xi(1)*face_node_xi)
+   end subroutine face_shape_functions
 
    !> The matrix [v]x with [v]x w = v x w.
    pure function skew(vector) result(matrix)

@@ -26,6 +26,7 @@ module frix_hdf5_results
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_hdf5_support, only: hid_t, hdf5_location_t, hdf5_initialize, create_group, open_group, close_group, &
+                                close_group_after, &
                                 link_exists, write_dataset, read_dataset, dataset_shape, write_attribute, &
                                 read_attribute, attribute_exists
    use hdf5, only: h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5fis_hdf5_f, &
@@ -115,7 +116,6 @@ contains
       character(len=*), intent(in) :: title, deck_path, version
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: group
-      type(error_t), allocatable :: close_error
 
       call write_attribute(file, 'frix_version', version, error)
       if (allocated(error)) return
@@ -129,12 +129,8 @@ contains
       call create_group(file, 'mesh', group, error)
       if (allocated(error)) return
       call write_mesh(group, mesh, error)
-      call close_group(group, close_error)
+      call close_group_after(group, error)
       if (allocated(error)) return
-      if (allocated(close_error)) then
-         call move_alloc(close_error, error)
-         return
-      end if
       call create_group(file, 'increments', group, error)
       if (allocated(error)) return
       call close_group(group, error)
@@ -146,7 +142,6 @@ contains
       type(mesh_t), intent(in) :: mesh
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: sets, surface
-      type(error_t), allocatable :: close_error
       integer :: i
 
       call write_dataset(group, 'coordinates', mesh%coords, error)
@@ -169,9 +164,7 @@ contains
             if (allocated(error)) exit
          end do
       end if
-      call close_group(sets, close_error)
-      if (allocated(error)) return
-      call move_alloc(close_error, error)
+      call close_group_after(sets, error)
       if (allocated(error)) return
 
       call create_group(group, 'element_sets', sets, error)
@@ -184,9 +177,7 @@ contains
             if (allocated(error)) exit
          end do
       end if
-      call close_group(sets, close_error)
-      if (allocated(error)) return
-      call move_alloc(close_error, error)
+      call close_group_after(sets, error)
       if (allocated(error)) return
 
       call create_group(group, 'surfaces', sets, error)
@@ -199,14 +190,11 @@ contains
             if (allocated(error)) exit
             call write_dataset(surface, 'elements', mesh%surfaces(i)%elements, error)
             if (.not. allocated(error)) call write_dataset(surface, 'faces', mesh%surfaces(i)%faces, error)
-            call close_group(surface, close_error)
-            if (.not. allocated(error)) call move_alloc(close_error, error)
+            call close_group_after(surface, error)
             if (allocated(error)) exit
          end do
       end if
-      call close_group(sets, close_error)
-      if (allocated(error)) return
-      call move_alloc(close_error, error)
+      call close_group_after(sets, error)
    end subroutine write_mesh
 
    !> A set or array name must be usable as an HDF5 link name: not empty, not '.', no '/'.
@@ -284,7 +272,6 @@ contains
       real(dp), intent(in) :: history(:, :, :)    !! (n_state, n_points, n_elements)
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: increments, group
-      type(error_t), allocatable :: close_error
 
       if (self%file%id < 0) then
          call fatal_error(error, 'HDF5 output: increment written before the results file was created')
@@ -299,11 +286,9 @@ contains
       if (.not. allocated(error)) then
          call write_increment_group(self, group, step, increment, time, displacement, reaction, stress, strain, &
                                     alpha, history, error)
-         call close_group(group, close_error)
-         if (.not. allocated(error)) call move_alloc(close_error, error)
+         call close_group_after(group, error)
       end if
-      call close_group(increments, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_group_after(increments, error)
       if (allocated(error)) return
       self%n_increments = self%n_increments + 1
       deallocate (self%contact)
@@ -342,7 +327,6 @@ contains
       real(dp), intent(in) :: alpha(:, :), history(:, :, :)
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: contact
-      type(error_t), allocatable :: close_error
       integer :: i
 
       call write_attribute(group, 'step', step, error)
@@ -381,9 +365,7 @@ contains
             end associate
             if (allocated(error)) exit
          end do
-         call close_group(contact, close_error)
-         if (allocated(error)) return
-         call move_alloc(close_error, error)
+         call close_group_after(contact, error)
          if (allocated(error)) return
       end if
       ! written last: readers ignore a group without it (a run stopped while writing it)
@@ -394,11 +376,7 @@ contains
    subroutine results_close(self, error)
       class(hdf5_results_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      integer :: status
-      if (self%file%id < 0) return
-      call h5fclose_f(self%file%id, status)
-      self%file%id = -1
-      if (status /= 0) call fatal_error(error, 'HDF5: cannot close results file "'//self%file%file_path//'"')
+      call close_file(self%file, error)
    end subroutine results_close
 
    subroutine flush_file(file, error)
@@ -462,6 +440,16 @@ contains
       if (status /= 0) call fatal_error(error, 'HDF5: cannot close results file "'//file%file_path//'"')
    end subroutine close_file
 
+   !> Close `file` after work on it that may have failed: `error` keeps the work's error if
+   !> there is one, otherwise it receives the close's.
+   subroutine close_file_after(file, error)
+      type(hdf5_location_t), intent(inout) :: file
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: close_error
+      call close_file(file, close_error)
+      if (.not. allocated(error)) call move_alloc(close_error, error)
+   end subroutine close_file_after
+
    !> Complete increment groups of an open file: running numbers, step, increment, time.
    subroutine scan_increments(file, numbers, steps, increments, times, error)
       type(hdf5_location_t), intent(in) :: file
@@ -469,7 +457,6 @@ contains
       real(dp), allocatable, intent(out) :: times(:)
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: increments_group, group
-      type(error_t), allocatable :: close_error
       logical :: exists, complete
       integer :: k, step, increment
       real(dp) :: time
@@ -496,12 +483,10 @@ contains
                times = [times, time]
             end if
          end if
-         call close_group(group, close_error)
-         if (.not. allocated(error)) call move_alloc(close_error, error)
+         call close_group_after(group, error)
          if (allocated(error)) exit
       end do
-      call close_group(increments_group, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_group_after(increments_group, error)
    end subroutine scan_increments
 
    !> Step, increment number and time of every complete increment of the results file `path`,
@@ -512,13 +497,11 @@ contains
       real(dp), allocatable, intent(out) :: times(:)
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: file
-      type(error_t), allocatable :: close_error
       integer, allocatable :: numbers(:)
       call open_for_reading(path, file, error)
       if (allocated(error)) return
       call scan_increments(file, numbers, steps, increments, times, error)
-      call close_file(file, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_file_after(file, error)
    end subroutine list_increments
 
    !> Open the group of increment (step, increment) of an open file; the error lists the
@@ -577,12 +560,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t), intent(in), optional :: mesh  !! the current mesh, to compare the connectivity
       type(hdf5_location_t) :: file
-      type(error_t), allocatable :: close_error
       call open_for_reading(path, file, error)
       if (allocated(error)) return
       call read_restart_open(file, selector_step, selector_increment, time, u, alpha, history, error, mesh)
-      call close_file(file, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_file_after(file, error)
       if (allocated(error)) error%message = 'restart from step '//to_string(selector_step)//' increment '// &
                                             to_string(selector_increment)//': '//error%message
    end subroutine read_restart
@@ -594,7 +575,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t), intent(in), optional :: mesh
       type(hdf5_location_t) :: group
-      type(error_t), allocatable :: close_error
       real(dp), allocatable :: new_u(:, :), new_alpha(:, :), new_history(:, :, :)
       real(dp) :: new_time
 
@@ -611,8 +591,7 @@ contains
       call read_dataset(group, 'displacement', new_u, error)
       if (.not. allocated(error)) call read_dataset(group, 'alpha', new_alpha, error)
       if (.not. allocated(error)) call read_dataset(group, 'history', new_history, error)
-      call close_group(group, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_group_after(group, error)
       if (allocated(error)) return
       time = new_time
       u = reshape(new_u, [size(u)])
@@ -628,7 +607,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t), intent(in), optional :: mesh
       type(hdf5_location_t) :: group
-      type(error_t), allocatable :: close_error
       integer, allocatable :: coordinates_shape(:), connectivity_shape(:), connectivity(:, :)
 
       if (n_history_elements /= n_elements) then
@@ -666,8 +644,7 @@ contains
             end if
          end if
       end if
-      call close_group(group, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_group_after(group, error)
    end subroutine check_mesh
 
    !> Read a real 2-D dataset `name` of increment (step, increment), e.g. 'reaction' or
@@ -680,7 +657,6 @@ contains
       real(dp), intent(inout) :: values(:, :)
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: file, group
-      type(error_t), allocatable :: close_error
       integer, allocatable :: stored_shape(:)
       real(dp), allocatable :: flat(:)
       real(dp) :: time
@@ -698,10 +674,8 @@ contains
                call read_dataset(group, name, values, error)
             end if
          end if
-         call close_group(group, close_error)
-         if (.not. allocated(error)) call move_alloc(close_error, error)
+         call close_group_after(group, error)
       end if
-      call close_file(file, close_error)
-      if (.not. allocated(error)) call move_alloc(close_error, error)
+      call close_file_after(file, error)
    end subroutine read_increment_array
 end module frix_hdf5_results

@@ -26,7 +26,7 @@ module frix_hdf5_support
 
    public :: hid_t
    public :: hdf5_location_t, hdf5_initialize
-   public :: create_group, open_group, close_group, link_exists
+   public :: create_group, open_group, close_group, close_group_after, link_exists
    public :: write_dataset, read_dataset, dataset_shape
    public :: write_attribute, read_attribute, attribute_exists
 
@@ -97,6 +97,16 @@ contains
       call fatal_error(error, 'HDF5: cannot '//action//' "'//object//'" in "'//location%file_path//'"')
    end subroutine hdf5_failure
 
+   !> The error "HDF5: cannot <action> "<name>" of "<object>" in "<file>"" of attribute `name`.
+   subroutine attribute_failure(error, action, location, name)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: action   !! e.g. 'write attribute'
+      type(hdf5_location_t), intent(in) :: location
+      character(len=*), intent(in) :: name
+      call fatal_error(error, 'HDF5: cannot '//action//' "'//name//'" of "'//location%name//'" in "'// &
+                       location%file_path//'"')
+   end subroutine attribute_failure
+
    !> Create the group `name` below `parent`.
    subroutine create_group(parent, name, group, error)
       type(hdf5_location_t), intent(in) :: parent
@@ -105,12 +115,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: status
       call h5gcreate_f(parent%id, name, group%id, status)
-      if (status /= 0) then
-         call hdf5_failure(error, 'create group', parent, name)
-         return
-      end if
-      group%file_path = parent%file_path
-      group%name = child_path(parent, name)
+      call name_group(parent, name, status, 'create group', group, error)
    end subroutine create_group
 
    !> Open the existing group `name` below `parent`.
@@ -121,13 +126,25 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: status
       call h5gopen_f(parent%id, name, group%id, status)
+      call name_group(parent, name, status, 'open group', group, error)
+   end subroutine open_group
+
+   !> After h5gcreate_f or h5gopen_f returned `status`: the error "cannot <action> ..." on
+   !> failure, otherwise the file and object names of `group`.
+   subroutine name_group(parent, name, status, action, group, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: status
+      character(len=*), intent(in) :: action   !! 'create group' or 'open group'
+      type(hdf5_location_t), intent(inout) :: group
+      type(error_t), allocatable, intent(out) :: error
       if (status /= 0) then
-         call hdf5_failure(error, 'open group', parent, name)
+         call hdf5_failure(error, action, parent, name)
          return
       end if
       group%file_path = parent%file_path
       group%name = child_path(parent, name)
-   end subroutine open_group
+   end subroutine name_group
 
    !> Close a group opened by `create_group` or `open_group` (no-op if not open).
    subroutine close_group(group, error)
@@ -139,6 +156,16 @@ contains
       if (status /= 0) call hdf5_failure(error, 'close group', group, '')
       group%id = -1
    end subroutine close_group
+
+   !> Close `group` after work on it that may have failed: `error` keeps the work's error if
+   !> there is one, otherwise it receives the close's.
+   subroutine close_group_after(group, error)
+      type(hdf5_location_t), intent(inout) :: group
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: close_error
+      call close_group(group, close_error)
+      if (.not. allocated(error)) call move_alloc(close_error, error)
+   end subroutine close_group_after
 
    !> Whether a link (group or dataset) `name` exists directly below `parent`.
    subroutine link_exists(parent, name, exists, error)
@@ -391,8 +418,7 @@ contains
       integer :: status, close_status
       call h5screate_f(h5s_scalar_f, space, status)
       if (status /= 0) then
-         call fatal_error(error, 'HDF5: cannot create the dataspace of attribute "'//name//'" of "'// &
-                          location%name//'" in "'//location%file_path//'"')
+         call attribute_failure(error, 'create the dataspace of attribute', location, name)
          return
       end if
       call h5acreate_f(location%id, name, type_id, space, attribute, status)
@@ -403,8 +429,7 @@ contains
       end if
       call h5sclose_f(space, close_status)
       if (status == 0) status = close_status
-      if (status /= 0) call fatal_error(error, 'HDF5: cannot write attribute "'//name//'" of "'// &
-                                        location%name//'" in "'//location%file_path//'"')
+      if (status /= 0) call attribute_failure(error, 'write attribute', location, name)
    end subroutine write_attribute_raw
 
    !> Text attribute: a fixed-length NUL-terminated (H5T_STR_NULLTERM) string of len(text) + 1 bytes.
@@ -421,8 +446,7 @@ contains
       if (status == 0) call h5tset_size_f(string_type, int(len(buffer), size_t), status)
       if (status == 0) call h5tset_strpad_f(string_type, h5t_str_nullterm_f, status)
       if (status /= 0) then
-         call fatal_error(error, 'HDF5: cannot make the string type of attribute "'//name//'" of "'// &
-                          location%name//'" in "'//location%file_path//'"')
+         call attribute_failure(error, 'make the string type of attribute', location, name)
          return
       end if
       call write_attribute_raw(location, name, string_type, c_loc(buffer), error)
@@ -460,8 +484,7 @@ contains
       integer :: status
       exists = .false.
       call h5aexists_f(location%id, name, exists, status)
-      if (status /= 0) call fatal_error(error, 'HDF5: cannot look up attribute "'//name//'" of "'// &
-                                        location%name//'" in "'//location%file_path//'"')
+      if (status /= 0) call attribute_failure(error, 'look up attribute', location, name)
    end subroutine attribute_exists
 
    !> Read the scalar attribute `name` of `location` as `type_id` into `buffer`.
@@ -481,8 +504,7 @@ contains
          call h5aclose_f(attribute, close_status)
          if (status == 0) status = close_status
       end if
-      if (status /= 0) call fatal_error(error, 'HDF5: cannot read attribute "'//name//'" of "'// &
-                                        location%name//'" in "'//location%file_path//'"')
+      if (status /= 0) call attribute_failure(error, 'read attribute', location, name)
    end subroutine read_attribute_raw
 
    subroutine read_attribute_integer(location, name, value, error)

@@ -38,6 +38,7 @@ module frix_pos3d_writer
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_field_recovery, only: nodal_extrapolated, von_mises_field
+   use frix_text_output, only: real_edit, open_for_writing, put, close_written_file
    implicit none
    private
 
@@ -45,7 +46,6 @@ module frix_pos3d_writer
 
    !> Tecgraf BRICK8 local node k (and Gauss point k) = frix/VTK local node (point) of this index.
    integer, parameter :: pos3d_brick8_from_vtk(8) = [5, 6, 7, 8, 1, 2, 3, 4]
-   character(len=*), parameter :: real_edit = 'es24.16e3'   !! 17 significant digits
    integer, parameter :: integration_order = 2              !! 2x2x2 Gauss, in the element records
    character(len=*), parameter :: stress_names = &
                                   "'STRESS_XX' 'STRESS_YY' 'STRESS_ZZ' 'STRESS_XY' 'STRESS_XZ' 'STRESS_YZ'"
@@ -93,7 +93,6 @@ contains
       real(dp), intent(in), optional :: materials(:, :)     !! (2, n_materials): E, nu
       integer, intent(in), optional :: element_material(:)  !! (n_elements) column of `materials`
       integer :: unit, stat
-      character(len=256) :: message
 
       self%is_open = .false.
       if (.not. (allocated(mesh%coords) .and. allocated(mesh%connectivity))) then
@@ -137,11 +136,8 @@ contains
       self%connectivity = mesh%connectivity
       self%factors = [real(dp) ::]
 
-      open (newunit=unit, file=body_path(self), status='replace', action='write', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot open POS3D file "'//body_path(self)//'": '//trim(message))
-         return
-      end if
+      call open_for_writing(body_path(self), 'POS3D file "'//body_path(self)//'"', unit, error)
+      if (allocated(error)) return
       close (unit, iostat=stat)
       self%is_open = .true.
       call rewrite(self, error)
@@ -164,7 +160,6 @@ contains
       real(dp), intent(in) :: nodal_scalars(:, :)          !! (size(nodal_scalar_names), n_nodes)
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: node_stress(:, :), node_von_mises(:)
-      character(len=256) :: message
       character(len=:), allocatable :: line_format
       integer :: unit, stat, n_nodes, n_elements, node, element, k, step, n_names
 
@@ -196,12 +191,9 @@ contains
       node_von_mises = von_mises_field(node_stress)
 
       step = size(self%factors) + 1
-      open (newunit=unit, file=body_path(self), status='old', position='append', action='write', iostat=stat, &
-            iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot open POS3D body file "'//body_path(self)//'": '//trim(message))
-         return
-      end if
+      call open_for_writing(body_path(self), 'POS3D body file "'//body_path(self)//'"', unit, error, append=.true.)
+      if (allocated(error)) return
+      stat = 0
       call put(unit, '%RESULT.CASE.STEP', stat)
       call put(unit, to_string(step), stat)
       call put(unit, '%RESULT.CASE.STEP.FACTOR', stat)
@@ -237,16 +229,8 @@ contains
             call put_real_row(unit, gp_stress(:, pos3d_brick8_from_vtk(k), element), stat)
          end do
       end do
-      if (stat /= 0) then
-         close (unit)
-         call fatal_error(error, 'cannot write POS3D body file "'//body_path(self)//'" (iostat '//to_string(stat)//')')
-         return
-      end if
-      close (unit, iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot close POS3D body file "'//body_path(self)//'"')
-         return
-      end if
+      call close_written_file(unit, stat, 'POS3D body file "'//body_path(self)//'"', error)
+      if (allocated(error)) return
       self%factors = [self%factors, time]
       call rewrite(self, error)
    end subroutine add_step
@@ -268,17 +252,14 @@ contains
       type(pos3d_writer_t), intent(in) :: self
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: temporary
-      character(len=256) :: message
       integer :: unit, stat, node, element, material, step, n_nodes, n_elements
 
       temporary = self%path//'.tmp'
       n_nodes = size(self%coords, 2)
       n_elements = size(self%connectivity, 2)
-      open (newunit=unit, file=temporary, status='replace', action='write', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot open POS3D file "'//temporary//'": '//trim(message))
-         return
-      end if
+      call open_for_writing(temporary, 'POS3D file "'//temporary//'"', unit, error)
+      if (allocated(error)) return
+      stat = 0
       call put(unit, '%HEADER', stat)
       call put(unit, "'"//self%title//"'", stat)
       call put(unit, '%NODE', stat)
@@ -320,16 +301,8 @@ contains
          close (unit)
          return
       end if
-      if (stat /= 0) then
-         close (unit)
-         call fatal_error(error, 'cannot write POS3D file "'//temporary//'" (iostat '//to_string(stat)//')')
-         return
-      end if
-      close (unit, iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot close POS3D file "'//temporary//'"')
-         return
-      end if
+      call close_written_file(unit, stat, 'POS3D file "'//temporary//'"', error)
+      if (allocated(error)) return
       if (c_rename(temporary//c_null_char, self%path//c_null_char) /= 0) then
          call fatal_error(error, 'cannot rename POS3D file "'//temporary//'" to "'//self%path//'"')
       end if
@@ -405,15 +378,6 @@ contains
          if (line(i:i) == new_line('a') .or. line(i:i) == achar(13)) line(i:i) = ' '
       end do
    end function one_line
-
-   !> Write one line unless an earlier write failed (`stat` /= 0 skips everything after).
-   subroutine put(unit, text, stat)
-      integer, intent(in) :: unit
-      character(len=*), intent(in) :: text
-      integer, intent(inout) :: stat
-      if (stat /= 0) return
-      write (unit, '(a)', iostat=stat) text
-   end subroutine put
 
    !> A row of reals, preceded by the id `id` when present.
    subroutine put_real_row(unit, values, stat, id)

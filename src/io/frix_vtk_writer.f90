@@ -27,13 +27,13 @@ module frix_vtk_writer
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises_field
+   use frix_text_output, only: real_edit, open_for_writing, put, close_written_file
    implicit none
    private
 
    public :: vtk_series_t, vtk_hexahedron
 
    integer, parameter :: vtk_hexahedron = 12   !! VTK cell type of the 8-node hexahedron
-   character(len=*), parameter :: real_edit = 'es24.16e3'   !! 17 significant digits: binary64 round-trips
 
    !> A named field: values(n_components, n_nodes or n_elements).
    type :: named_field_t
@@ -117,7 +117,6 @@ contains
       real(dp), allocatable :: node_stress(:, :), node_strain(:, :), cell_stress(:, :), cell_strain(:, :)
       character(len=:), allocatable :: file_name, path
       integer :: unit, stat, i
-      character(len=256) :: message
 
       call check_sizes(self, mesh, displacement, reaction, stress, strain, error)
       if (allocated(error)) return
@@ -130,11 +129,9 @@ contains
 
       file_name = base_name(self%base)//'_'//padded(step)//'_'//padded(increment)//'.vtu'
       path = self%base//'_'//padded(step)//'_'//padded(increment)//'.vtu'
-      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot open VTK file "'//path//'": '//trim(message))
-         return
-      end if
+      call open_for_writing(path, 'VTK file "'//path//'"', unit, error)
+      if (allocated(error)) return
+      stat = 0
       call put(unit, '<?xml version="1.0"?>', stat)
       call put(unit, '<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64">', stat)
       call put(unit, '<UnstructuredGrid>', stat)
@@ -180,16 +177,8 @@ contains
       call put(unit, '</Piece>', stat)
       call put(unit, '</UnstructuredGrid>', stat)
       call put(unit, '</VTKFile>', stat)
-      if (stat /= 0) then
-         close (unit)
-         call fatal_error(error, 'cannot write VTK file "'//path//'" (iostat '//to_string(stat)//')')
-         return
-      end if
-      close (unit, iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot close VTK file "'//path//'" (iostat '//to_string(stat)//')')
-         return
-      end if
+      call close_written_file(unit, stat, 'VTK file "'//path//'"', error, close_iostat=.true.)
+      if (allocated(error)) return
 
       self%datasets = [self%datasets, dataset_entry_t(file_name, time)]
       deallocate (self%point_fields, self%cell_fields)
@@ -263,15 +252,12 @@ contains
       type(vtk_series_t), intent(in) :: self
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: path
-      character(len=256) :: message
       character(len=24) :: time_text
       integer :: unit, stat, i
       path = self%base//'.pvd'
-      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot open ParaView collection "'//path//'": '//trim(message))
-         return
-      end if
+      call open_for_writing(path, 'ParaView collection "'//path//'"', unit, error)
+      if (allocated(error)) return
+      stat = 0
       call put(unit, '<?xml version="1.0"?>', stat)
       call put(unit, '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">', stat)
       call put(unit, '<Collection>', stat)
@@ -282,23 +268,8 @@ contains
       end do
       call put(unit, '</Collection>', stat)
       call put(unit, '</VTKFile>', stat)
-      if (stat /= 0) then
-         close (unit)
-         call fatal_error(error, 'cannot write ParaView collection "'//path//'" (iostat '//to_string(stat)//')')
-         return
-      end if
-      close (unit, iostat=stat)
-      if (stat /= 0) call fatal_error(error, 'cannot close ParaView collection "'//path//'"')
+      call close_written_file(unit, stat, 'ParaView collection "'//path//'"', error)
    end subroutine write_collection
-
-   !> Write one line unless an earlier write failed (`stat` /= 0 skips everything after).
-   subroutine put(unit, text, stat)
-      integer, intent(in) :: unit
-      character(len=*), intent(in) :: text
-      integer, intent(inout) :: stat
-      if (stat /= 0) return
-      write (unit, '(a)', iostat=stat) text
-   end subroutine put
 
    !> A Float64 DataArray, one tuple (column of `values`) per line.
    subroutine put_reals(unit, name, values, stat, field_data)

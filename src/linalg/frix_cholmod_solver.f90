@@ -11,7 +11,8 @@ module frix_cholmod_solver
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
-   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message, begin_factorize, &
+                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
    use frix_metis_ordering, only: metis_dof_permutation
    implicit none
    private
@@ -101,12 +102,8 @@ contains
       real(c_double) :: lnz, min_pivot, max_pivot, peak, in_use
       real(dp) :: start
 
-      solver%failed_equation = 0
-      solver%factorized_pattern_id = 0
-      if (matrix%pattern_id == 0 .or. matrix%n == 0) then
-         call fatal_error(error, 'CHOLMOD: the matrix has no pattern')
-         return
-      end if
+      call begin_factorize(solver, matrix, error)
+      if (allocated(error)) return
       if (.not. c_associated(solver%handle)) solver%handle = frix_cholmod_create()
       if (.not. c_associated(solver%handle)) then
          call fatal_error(error, 'CHOLMOD: out of memory creating cholmod_common')
@@ -120,8 +117,7 @@ contains
          if (allocated(error)) return
          status = frix_cholmod_analyse(solver%handle, int(matrix%n, c_int), matrix%col_ptr, matrix%row_index, &
                                        matrix%values, permutation, lnz)
-         solver%last_analyse_seconds = wall_clock_seconds() - start
-         solver%analyse_seconds = solver%analyse_seconds + solver%last_analyse_seconds
+         call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status < 0) then
             call fatal_error(error, 'CHOLMOD: symbolic analysis failed, status '//to_string(int(status)))
             return
@@ -134,9 +130,7 @@ contains
       start = wall_clock_seconds()
       status = frix_cholmod_factorize(solver%handle, int(matrix%n, c_int), matrix%col_ptr, matrix%row_index, &
                                       matrix%values, failed, min_pivot, max_pivot)
-      solver%last_factorize_seconds = wall_clock_seconds() - start
-      solver%factorize_seconds = solver%factorize_seconds + solver%last_factorize_seconds
-      solver%n_factorizations = solver%n_factorizations + 1
+      call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       call frix_cholmod_memory(solver%handle, peak, in_use)
       solver%peak_memory_bytes = int(peak, i8)
 
@@ -153,9 +147,9 @@ contains
       if (.not. (min_pivot > solver%singular_pivot_ratio*max_pivot)) then
          solver%failed_equation = int(failed) + 1
          call singular_matrix_message(error, 'CHOLMOD', 'singular or not positive definite', &
-                                      solver%failed_equation, 'pivot ratio '// &
-                                      to_string(real(min_pivot/max(max_pivot, tiny(1.0_dp)), dp))// &
-                                      ' below '//to_string(solver%singular_pivot_ratio))
+                                      solver%failed_equation, &
+                                      pivot_ratio_detail(real(min_pivot/max(max_pivot, tiny(1.0_dp)), dp), &
+                                                         solver%singular_pivot_ratio))
          return
       end if
       solver%factorized_pattern_id = matrix%pattern_id
@@ -170,19 +164,11 @@ contains
       integer(c_int) :: status
       real(dp) :: start
 
-      if (solver%factorized_pattern_id == 0 .or. solver%factorized_pattern_id /= matrix%pattern_id) then
-         call fatal_error(error, 'CHOLMOD: solve called without a successful factorize of this matrix')
-         return
-      end if
-      if (size(rhs) /= matrix%n .or. size(x) /= matrix%n) then
-         call fatal_error(error, 'CHOLMOD: right-hand side or solution size differs from '//to_string(matrix%n))
-         return
-      end if
+      call check_solve_sizes(solver, matrix, size(rhs), size(x), error)
+      if (allocated(error)) return
       start = wall_clock_seconds()
       status = frix_cholmod_solve(solver%handle, int(matrix%n, c_int), rhs, x)
-      solver%last_solve_seconds = wall_clock_seconds() - start
-      solver%solve_seconds = solver%solve_seconds + solver%last_solve_seconds
-      solver%n_solves = solver%n_solves + 1
+      call add_elapsed_seconds(start, solver%last_solve_seconds, solver%solve_seconds, solver%n_solves)
       if (status < 0) call fatal_error(error, 'CHOLMOD: solve failed, status '//to_string(int(status)))
    end subroutine solve
 

@@ -11,6 +11,7 @@ module frix_linear_solver
    private
 
    public :: linear_solver_t, wall_clock_seconds, singular_matrix_message
+   public :: begin_factorize, check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
 
    !> Abstract direct solver. Timings are wall clock seconds (system_clock).
    type, abstract :: linear_solver_t
@@ -85,6 +86,55 @@ contains
       call system_clock(count, rate)
       seconds = real(count, dp)/real(rate, dp)
    end function wall_clock_seconds
+
+   !> Common start of every `factorize`: forget the previous factorization (and failed
+   !> equation), and give an error if `matrix` has no pattern.
+   subroutine begin_factorize(solver, matrix, error)
+      class(linear_solver_t), intent(inout) :: solver
+      type(sparse_matrix_t), intent(in) :: matrix
+      type(error_t), allocatable, intent(out) :: error
+      solver%failed_equation = 0
+      solver%factorized_pattern_id = 0
+      if (matrix%pattern_id == 0 .or. matrix%n == 0) then
+         call fatal_error(error, solver%name()//': the matrix has no pattern')
+      end if
+   end subroutine begin_factorize
+
+   !> Common checks of every `solve`: a valid factorization of this `matrix` exists, and
+   !> the right-hand side and solution have its size.
+   subroutine check_solve_sizes(solver, matrix, rhs_size, x_size, error)
+      class(linear_solver_t), intent(in) :: solver
+      type(sparse_matrix_t), intent(in) :: matrix
+      integer, intent(in) :: rhs_size   !! size of the right-hand side
+      integer, intent(in) :: x_size     !! size of the solution
+      type(error_t), allocatable, intent(out) :: error
+      if (solver%factorized_pattern_id == 0 .or. solver%factorized_pattern_id /= matrix%pattern_id) then
+         call fatal_error(error, solver%name()//': solve called without a successful factorize of this matrix')
+      else if (rhs_size /= matrix%n .or. x_size /= matrix%n) then
+         call fatal_error(error, solver%name()//': right-hand side or solution size differs from '// &
+                          to_string(matrix%n))
+      end if
+   end subroutine check_solve_sizes
+
+   !> Wall clock seconds since `start` (from wall_clock_seconds) into `last`, added to `total`;
+   !> `count`, when present, is incremented (phases counted whether they succeeded or not).
+   subroutine add_elapsed_seconds(start, last, total, count)
+      real(dp), intent(in) :: start     !! wall_clock_seconds() at the start of the phase [s]
+      real(dp), intent(out) :: last     !! duration of the phase [s]
+      real(dp), intent(inout) :: total  !! accumulated duration of this phase [s]
+      integer, intent(inout), optional :: count   !! number of times the phase was done
+      last = wall_clock_seconds() - start
+      total = total + last
+      if (present(count)) count = count + 1
+   end subroutine add_elapsed_seconds
+
+   !> Detail text 'pivot ratio <ratio> below <limit>' of a nearly singular factorization.
+   function pivot_ratio_detail(ratio, limit) result(detail)
+      real(dp), intent(in) :: ratio   !! smallest / largest pivot found
+      real(dp), intent(in) :: limit   !! the solver's singular_pivot_ratio
+      character(len=:), allocatable :: detail
+      detail = 'pivot ratio '//to_string(ratio)//' below '//to_string(limit)
+   end function pivot_ratio_detail
 
    !> The common error text for a singular or indefinite matrix, naming equation, node and
    !> direction (equation = 3*(node-1) + direction); `equation` 0 means unknown.

@@ -12,7 +12,8 @@ module frix_umfpack_solver
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
-   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message, begin_factorize, &
+                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
    implicit none
    private
 
@@ -127,12 +128,8 @@ contains
       integer(c_int) :: status
       real(dp) :: start
 
-      solver%failed_equation = 0
-      solver%factorized_pattern_id = 0
-      if (matrix%pattern_id == 0 .or. matrix%n == 0) then
-         call fatal_error(error, 'UMFPACK: the matrix has no pattern')
-         return
-      end if
+      call begin_factorize(solver, matrix, error)
+      if (allocated(error)) return
       if (c_associated(solver%numeric)) call umfpack_di_free_numeric(solver%numeric)
 
       if (matrix%pattern_id /= solver%analysed_pattern_id) then
@@ -143,8 +140,7 @@ contains
          start = wall_clock_seconds()
          status = umfpack_di_symbolic(int(matrix%n, c_int), int(matrix%n, c_int), matrix%col_ptr, &
                                       matrix%row_index, matrix%values, solver%symbolic, solver%control, solver%info)
-         solver%last_analyse_seconds = wall_clock_seconds() - start
-         solver%analyse_seconds = solver%analyse_seconds + solver%last_analyse_seconds
+         call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status /= umfpack_ok) then
             call fatal_error(error, 'UMFPACK: symbolic analysis failed, status '//to_string(int(status)))
             return
@@ -156,9 +152,7 @@ contains
       start = wall_clock_seconds()
       status = umfpack_di_numeric(matrix%col_ptr, matrix%row_index, matrix%values, solver%symbolic, &
                                   solver%numeric, solver%control, solver%info)
-      solver%last_factorize_seconds = wall_clock_seconds() - start
-      solver%factorize_seconds = solver%factorize_seconds + solver%last_factorize_seconds
-      solver%n_factorizations = solver%n_factorizations + 1
+      call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       solver%peak_memory_bytes = int(solver%info(umfpack_peak_memory + 1)*solver%info(umfpack_size_of_unit + 1), i8)
       solver%factor_entries = int(solver%info(umfpack_lnz + 1) + solver%info(umfpack_unz + 1), i8)
 
@@ -173,8 +167,8 @@ contains
       if (.not. (solver%info(umfpack_rcond + 1) > solver%singular_pivot_ratio)) then
          solver%failed_equation = smallest_pivot_column(solver, matrix%n)
          call singular_matrix_message(error, 'UMFPACK', 'singular', solver%failed_equation, &
-                                      'pivot ratio '//to_string(real(solver%info(umfpack_rcond + 1), dp))// &
-                                      ' below '//to_string(solver%singular_pivot_ratio))
+                                      pivot_ratio_detail(real(solver%info(umfpack_rcond + 1), dp), &
+                                                         solver%singular_pivot_ratio))
          return
       end if
       solver%factorized_pattern_id = matrix%pattern_id
@@ -206,20 +200,12 @@ contains
       integer(c_int) :: status
       real(dp) :: start
 
-      if (solver%factorized_pattern_id == 0 .or. solver%factorized_pattern_id /= matrix%pattern_id) then
-         call fatal_error(error, 'UMFPACK: solve called without a successful factorize of this matrix')
-         return
-      end if
-      if (size(rhs) /= matrix%n .or. size(x) /= matrix%n) then
-         call fatal_error(error, 'UMFPACK: right-hand side or solution size differs from '//to_string(matrix%n))
-         return
-      end if
+      call check_solve_sizes(solver, matrix, size(rhs), size(x), error)
+      if (allocated(error)) return
       start = wall_clock_seconds()
       status = umfpack_di_solve(umfpack_system_a, matrix%col_ptr, matrix%row_index, matrix%values, x, rhs, &
                                 solver%numeric, solver%control, solver%info)
-      solver%last_solve_seconds = wall_clock_seconds() - start
-      solver%solve_seconds = solver%solve_seconds + solver%last_solve_seconds
-      solver%n_solves = solver%n_solves + 1
+      call add_elapsed_seconds(start, solver%last_solve_seconds, solver%solve_seconds, solver%n_solves)
       if (status /= umfpack_ok) call fatal_error(error, 'UMFPACK: solve failed, status '//to_string(int(status)))
    end subroutine solve
 

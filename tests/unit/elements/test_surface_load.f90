@@ -4,13 +4,19 @@
 !>   - on a unit square each node carries a quarter (symmetry);
 !>   - tributary areas of a trapezoid worked out by hand (see test_trapezoid_weights);
 !>   - the follower load stiffness against a central difference of the force; the force is
-!>     quadratic in u, so the central difference has no truncation error, only round-off.
+!>     quadratic in u, so the central difference has no truncation error, only round-off;
+!>   - the face shape functions: N_a(xi_b) = delta_ab at the corners, sum_a N_a = 1, and their
+!>     derivatives against central differences (N_a is linear in each of xi, eta separately, so
+!>     the difference is exact up to round-off);
+!>   - the vector product on the right-handed basis (e_x x e_y = e_z, cyclic) and, for two
+!>     general vectors, anticommutativity and orthogonality to both operands.
 module test_surface_load
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_testing, only: unittest_t, new_unittest, check, check_close
-   use frix_surface_load, only: pressure_load, face_area_weights
+   use frix_surface_load, only: pressure_load, face_area_weights, face_shape_functions, face_node_xi, face_node_eta
+   use frix_vector_algebra, only: cross_product
    implicit none
    private
 
@@ -38,7 +44,9 @@ contains
                new_unittest('follower stiffness vs central differences', test_follower_tangent), &
                new_unittest('area weights of a unit square and a rectangle', test_rectangle_weights), &
                new_unittest('area weights of a trapezoid (by hand)', test_trapezoid_weights), &
-               new_unittest('plane face: nodal force = -p n weight', test_plane_force_matches_weights)]
+               new_unittest('plane face: nodal force = -p n weight', test_plane_force_matches_weights), &
+               new_unittest('face shape functions: corners, unity, derivatives', test_face_shape_functions), &
+               new_unittest('cross product: basis, anticommutative, orthogonal', test_cross_product)]
    end subroutine collect_surface_load
 
    subroutine test_unit_square(error)
@@ -195,6 +203,77 @@ contains
          if (allocated(error)) return
       end do
    end subroutine check_total
+
+   subroutine test_face_shape_functions(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: h = 1.0e-3_dp
+      real(dp), parameter :: points(2, 3) = reshape([0.3_dp, -0.7_dp, -0.45_dp, 0.2_dp, 1.3_dp, 0.9_dp], [2, 3])
+      real(dp) :: shape(4), d_xi(4), d_eta(4), plus(4), minus(4), unused_xi(4), unused_eta(4)
+      integer :: a, b, p
+      do b = 1, 4
+         call face_shape_functions([face_node_xi(b), face_node_eta(b)], shape, d_xi, d_eta)
+         do a = 1, 4
+            call check_close(error, shape(a), merge(1.0_dp, 0.0_dp, a == b), rel_tol=0.0_dp, &
+                             abs_tol=1.0e-15_dp, &
+                             message='N_'//to_string(a)//' at node '//to_string(b))
+            if (allocated(error)) return
+         end do
+      end do
+      do p = 1, size(points, 2)
+         call face_shape_functions(points(:, p), shape, d_xi, d_eta)
+         call check_close(error, sum(shape), 1.0_dp, rel_tol=0.0_dp, abs_tol=1.0e-15_dp, &
+                          message='partition of unity')
+         if (allocated(error)) return
+         call face_shape_functions(points(:, p) + [h, 0.0_dp], plus, unused_xi, unused_eta)
+         call face_shape_functions(points(:, p) - [h, 0.0_dp], minus, unused_xi, unused_eta)
+         do a = 1, 4
+            call check_close(error, d_xi(a), (plus(a) - minus(a))/(2.0_dp*h), rel_tol=0.0_dp, &
+                             abs_tol=1.0e-12_dp, &
+                             message='dN_'//to_string(a)//'/dxi')
+            if (allocated(error)) return
+         end do
+         call face_shape_functions(points(:, p) + [0.0_dp, h], plus, unused_xi, unused_eta)
+         call face_shape_functions(points(:, p) - [0.0_dp, h], minus, unused_xi, unused_eta)
+         do a = 1, 4
+            call check_close(error, d_eta(a), (plus(a) - minus(a))/(2.0_dp*h), rel_tol=0.0_dp, &
+                             abs_tol=1.0e-12_dp, &
+                             message='dN_'//to_string(a)//'/deta')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_face_shape_functions
+
+   subroutine test_cross_product(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: left(3) = [1.5_dp, -2.0_dp, 0.25_dp], right(3) = [-0.5_dp, 3.0_dp, 4.0_dp]
+      real(dp) :: product(3)
+      integer :: k
+      do k = 1, 3
+         product = cross_product(unit_vector(k), unit_vector(mod(k, 3) + 1))
+         call check(error, all(product == unit_vector(mod(k + 1, 3) + 1)), &
+                    'e_'//to_string(k)//' x e_'//to_string(mod(k, 3) + 1)//' = e_'//to_string(mod(k + 1, 3) + 1))
+         if (allocated(error)) return
+      end do
+      ! left x right by hand: (-2*4 - 0.25*3, 0.25*(-0.5) - 1.5*4, 1.5*3 - (-2)*(-0.5)) = (-8.75, -6.125, 3.5)
+      product = cross_product(left, right)
+      call check(error, all(product == [-8.75_dp, -6.125_dp, 3.5_dp]), 'left x right by hand')
+      if (allocated(error)) return
+      call check(error, all(cross_product(right, left) == -product), 'anticommutative')
+      if (allocated(error)) return
+      call check_close(error, dot_product(product, left), 0.0_dp, rel_tol=0.0_dp, abs_tol=1.0e-14_dp, &
+                       message='orthogonal to left')
+      if (allocated(error)) return
+      call check_close(error, dot_product(product, right), 0.0_dp, rel_tol=0.0_dp, abs_tol=1.0e-14_dp, &
+                       message='orthogonal to right')
+   end subroutine test_cross_product
+
+   !> Cartesian basis vector e_k.
+   pure function unit_vector(k) result(vector)
+      integer, intent(in) :: k
+      real(dp) :: vector(3)
+      vector = 0.0_dp
+      vector(k) = 1.0_dp
+   end function unit_vector
 
    !> (d1 x d2)/2 with d1 = x3 - x1, d2 = x4 - x2: the vector area of a bilinear face.
    pure function half_diagonal_cross(x) result(area)
