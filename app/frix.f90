@@ -28,7 +28,7 @@ contains
    subroutine parse_command_line(options, status)
       type(run_options_t), intent(out) :: options
       integer, intent(out) :: status  !! 0 ok, 1 help asked, 2 usage error
-      character(len=:), allocatable :: argument
+      character(len=:), allocatable :: argument, value
       integer :: i, n
       status = 0
       n = command_argument_count()
@@ -45,30 +45,17 @@ contains
          case ('--quiet')
             options%quiet = .true.
          case ('--restart')
-            if (i == n) then
-               write (0, '(a)') 'frix: --restart needs the HDF5 file of an earlier run'
-               status = 2
-               return
-            end if
-            i = i + 1
-            options%restart_path = get_argument(i)
+            call option_value(i, n, '--restart needs the HDF5 file of an earlier run', &
+                              options%restart_path, status)
+            if (status /= 0) return
          case ('--from')
-            if (i == n) then
-               write (0, '(a)') 'frix: --from needs STEP.INCREMENT, e.g. --from 2.3'
-               status = 2
-               return
-            end if
-            i = i + 1
-            call parse_step_increment(get_argument(i), options%restart_step, options%restart_increment, status)
+            call option_value(i, n, '--from needs STEP.INCREMENT, e.g. --from 2.3', value, status)
+            if (status /= 0) return
+            call parse_step_increment(value, options%restart_step, options%restart_increment, status)
             if (status /= 0) return
          case ('--out')
-            if (i == n) then
-               write (0, '(a)') 'frix: --out needs a directory'
-               status = 2
-               return
-            end if
-            i = i + 1
-            options%output_directory = get_argument(i)
+            call option_value(i, n, '--out needs a directory', options%output_directory, status)
+            if (status /= 0) return
          case default
             if (argument(1:1) == '-') then
                write (0, '(a)') 'frix: unknown option "'//argument//'"'
@@ -91,6 +78,23 @@ contains
          status = 2
       end if
    end subroutine parse_command_line
+
+   !> The value after option i (advancing i), or a usage error `missing` if there is none.
+   subroutine option_value(i, n, missing, value, status)
+      integer, intent(inout) :: i
+      integer, intent(in) :: n
+      character(len=*), intent(in) :: missing
+      character(len=:), allocatable, intent(out) :: value
+      integer, intent(out) :: status
+      status = 0
+      if (i == n) then
+         write (0, '(a)') 'frix: '//missing
+         status = 2
+         return
+      end if
+      i = i + 1
+      value = get_argument(i)
+   end subroutine option_value
 
    !> "S.K" -> S, K (positive integers).
    subroutine parse_step_increment(text, step, increment, status)

@@ -251,7 +251,7 @@ contains
       integer, allocatable :: cell_start(:), cell_faces(:), counts(:)
       real(dp) :: origin(3), cell_size, x_face(3, 4), x_slave(3), xi(2), distance, best
       real(dp) :: gap, closest(3)
-      integer :: n_cells(3), f, i, c, k, best_face, cell(3), lo(3), hi(3), ix, iy, iz
+      integer :: n_cells(3), f, i, c, k, best_face, cell(3)
       logical :: fixed(2)
 
       associate (faces => pass%faces)
@@ -271,16 +271,7 @@ contains
          ! faces per cell as compressed rows: count, prefix sums, fill
          allocate (counts(product(n_cells)), source=0)
          do f = 1, size(faces, 2)
-            lo = cell_of(lower(:, f))
-            hi = cell_of(upper(:, f))
-            do iz = lo(3), hi(3)
-               do iy = lo(2), hi(2)
-                  do ix = lo(1), hi(1)
-                     c = ix + n_cells(1)*((iy - 1) + n_cells(2)*(iz - 1))
-                     counts(c) = counts(c) + 1
-                  end do
-               end do
-            end do
+            call visit_cells(f, .false.)
          end do
          allocate (cell_start(product(n_cells) + 1))
          cell_start(1) = 0
@@ -290,17 +281,7 @@ contains
          allocate (cell_faces(cell_start(product(n_cells) + 1)))
          counts = cell_start(:product(n_cells))
          do f = 1, size(faces, 2)
-            lo = cell_of(lower(:, f))
-            hi = cell_of(upper(:, f))
-            do iz = lo(3), hi(3)
-               do iy = lo(2), hi(2)
-                  do ix = lo(1), hi(1)
-                     c = ix + n_cells(1)*((iy - 1) + n_cells(2)*(iz - 1))
-                     counts(c) = counts(c) + 1
-                     cell_faces(counts(c)) = f
-                  end do
-               end do
-            end do
+            call visit_cells(f, .true.)
          end do
 
          do i = 1, size(pass%slave_nodes)
@@ -331,6 +312,24 @@ contains
          end do
       end associate
    contains
+      !> Count face f in every cell its box covers, or (fill) also store it there.
+      subroutine visit_cells(f, fill)
+         integer, intent(in) :: f
+         logical, intent(in) :: fill
+         integer :: lo(3), hi(3), ix, iy, iz, c
+         lo = cell_of(lower(:, f))
+         hi = cell_of(upper(:, f))
+         do iz = lo(3), hi(3)
+            do iy = lo(2), hi(2)
+               do ix = lo(1), hi(1)
+                  c = ix + n_cells(1)*((iy - 1) + n_cells(2)*(iz - 1))
+                  counts(c) = counts(c) + 1
+                  if (fill) cell_faces(counts(c)) = f
+               end do
+            end do
+         end do
+      end subroutine visit_cells
+
       pure function cell_of(point) result(index3)
          real(dp), intent(in) :: point(3)
          integer :: index3(3)
