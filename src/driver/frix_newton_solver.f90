@@ -239,9 +239,9 @@ contains
 
    !> Backtracking after a Newton correction du with contact: when the residual at u + du is
    !> larger than before the correction (penalty contact overshoots as nodes enter or leave
-   !> contact), the step is halved, u + du/2, u + du/4, ..., at most `max_backtracks` times;
-   !> the last trial is kept in any case. The correction norm reported is the one of the
-   !> accepted step.
+   !> contact), the step is halved, u + du/2, u + du/4, ..., at most `max_backtracks` times.
+   !> If no trial lowers the residual, the trial with the smallest residual is kept. The
+   !> correction norm reported is the one of the accepted step.
    subroutine contact_line_search(model, context, state, time, previous_norm, correction_norm, &
                                   failure, error)
       type(model_t), intent(in) :: model
@@ -252,22 +252,34 @@ contains
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
       integer, parameter :: max_backtracks = 4
-      real(dp) :: trial_norm, reference, fraction
+      real(dp) :: trial_norm, reference, fraction, best_norm, best_fraction
       integer :: k
       fraction = 1.0_dp
-      do k = 1, max_backtracks
+      best_norm = huge(1.0_dp)
+      best_fraction = 1.0_dp
+      do k = 0, max_backtracks
          call evaluate_equilibrium(model, context, state, time, .false., trial_norm, reference, failure, error)
          if (allocated(error)) return
          if (allocated(failure)) then
             deallocate (failure)   ! an inverted element: try a shorter step
-         else if (trial_norm <= previous_norm) then
-            return
+         else
+            if (trial_norm <= previous_norm) then
+               correction_norm = fraction*norm2(context%correction)
+               return
+            end if
+            if (trial_norm < best_norm) then
+               best_norm = trial_norm
+               best_fraction = fraction
+            end if
          end if
+         if (k == max_backtracks) exit
+         state%u = state%u - 0.5_dp*fraction*context%correction
          fraction = 0.5_dp*fraction
-         state%u = state%u - fraction*context%correction
-         correction_norm = fraction*norm2(context%correction)
          context%n_backtracks = context%n_backtracks + 1
       end do
+      ! no trial lowered the residual: keep the best one (u_old + best_fraction du)
+      state%u = state%u + (best_fraction - fraction)*context%correction
+      correction_norm = best_fraction*norm2(context%correction)
    end subroutine contact_line_search
 
    !> Factorize and solve K du = r. When CHOLMOD finds the matrix not positive definite (past
