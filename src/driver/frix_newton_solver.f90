@@ -142,7 +142,8 @@ contains
             return
          end if
          u_norm = norm2(state%u)
-         if (residual_norm <= model%controls%tol_residual*reference) then
+         if (residual_norm <= max(model%controls%tol_residual*reference, &
+                                  roundoff_floor(model, context, state))) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
                report%converged = .true.
@@ -328,6 +329,25 @@ contains
                       direction(mod(equation - 1, 3) + 1)// &
                       ': is that part of the model held against rigid-body motion?'
    end subroutine describe_singularity
+
+   !> The residual that round-off alone produces: forces computed from positions (penalty
+   !> contact eps_N A g, strains from x - X) carry errors of about epsilon |K_ii| |x_i| per
+   !> equation, which a relative test cannot beat when the load is small (the first small
+   !> increments of a cut-back with stiff penalties). Returns roundoff_factor times
+   !> epsilon ||K_ii |x_i| || over the free equations, with the diagonal of the tangent just
+   !> assembled and x the current coordinates.
+   function roundoff_floor(model, context, state) result(floor)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(in) :: context
+      type(analysis_state_t), intent(in) :: state
+      real(dp) :: floor
+      real(dp), parameter :: roundoff_factor = 10.0_dp
+      real(dp), allocatable :: diagonal(:), position(:)
+      allocate (diagonal(context%matrix%n))
+      call context%matrix%get_diagonal(diagonal)
+      position = reshape(model%mesh%coords, [size(state%u)]) + state%u
+      floor = roundoff_factor*epsilon(1.0_dp)*norm2(merge(diagonal*position, 0.0_dp, .not. context%fixed))
+   end function roundoff_floor
 
    !> Mean |K_ii|, the value put on the diagonal of constrained equations.
    function mean_absolute_diagonal(matrix) result(scale)
