@@ -84,3 +84,6 @@ set_tests_properties(loads_closed_form PROPERTIES LABELS regression)
 # Regression for the first-increment friction defect found by benchmark P2: stick tractions
 # must not depend on the number of increments (bench/p2/check_first_increment_friction.sh).
 include(${PROJECT_SOURCE_DIR}/bench/p2/p2_tests.cmake)
+add_test(NAME restart_contact COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_contact_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1.dck)
+set_tests_properties(restart_contact PROPERTIES LABELS "regression;contact")

@@ -37,6 +37,7 @@ module frix_contact_assembly
 
    public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
+   public :: contact_history_rows, get_contact_history, set_contact_history
 
    !> One pass: the nodes of a slave surface against the faces of a master surface or a plane.
    type :: contact_pass_t
@@ -68,6 +69,8 @@ module frix_contact_assembly
    character(len=*), parameter :: contact_table_labels(7) = [character(len=10) :: 'GAP', 'PRESSURE', &
                                                               'TRACTION_X', 'TRACTION_Y', 'TRACTION_Z', &
                                                               'SLIP', 'STATUS']
+
+   integer, parameter :: contact_history_rows = 8  !! rows of get_contact_history
 
    real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
 
@@ -543,4 +546,35 @@ contains
          end do
       end associate
    end subroutine contact_pass_table
+
+   !> The committed slip history of pass p as a real table (contact_history_rows, n_slave) for
+   !> restart files: anchor face, anchor face coordinates (2), anchor point (3, rigid plane),
+   !> has-anchor flag (0/1), accumulated slip.
+   subroutine get_contact_history(system, p, values)
+      type(contact_system_t), intent(in) :: system
+      integer, intent(in) :: p
+      real(dp), allocatable, intent(out) :: values(:, :)
+      associate (pass => system%passes(p))
+         allocate (values(contact_history_rows, size(pass%slave_nodes)))
+         values(1, :) = real(pass%anchor_face, dp)
+         values(2:3, :) = pass%anchor_xi
+         values(4:6, :) = pass%anchor_point
+         values(7, :) = merge(1.0_dp, 0.0_dp, pass%has_anchor)
+         values(8, :) = pass%slip
+      end associate
+   end subroutine get_contact_history
+
+   !> Restore what get_contact_history stored.
+   subroutine set_contact_history(system, p, values)
+      type(contact_system_t), intent(inout) :: system
+      integer, intent(in) :: p
+      real(dp), intent(in) :: values(:, :)
+      associate (pass => system%passes(p))
+         pass%anchor_face = nint(values(1, :))
+         pass%anchor_xi = values(2:3, :)
+         pass%anchor_point = values(4:6, :)
+         pass%has_anchor = values(7, :) > 0.5_dp
+         pass%slip = values(8, :)
+      end associate
+   end subroutine set_contact_history
 end module frix_contact_assembly

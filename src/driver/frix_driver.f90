@@ -21,8 +21,8 @@ module frix_driver
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
    use frix_support_check, only: check_rigid_body_support
-   use frix_hdf5_results, only: read_restart
-   use frix_contact_assembly, only: commit_contact
+   use frix_hdf5_results, only: read_restart, read_increment_array
+   use frix_contact_assembly, only: commit_contact, get_contact_history, set_contact_history
    use frix_mesh, only: hex8_face_nodes
    implicit none
    private
@@ -73,6 +73,10 @@ contains
       if (allocated(options%restart_path)) then
          call restart_state(model, options, results_base(options), state, first_step, first_increment, error)
          if (allocated(error)) return
+         if (context%has_contact) then
+            call restart_contact(options, context, error)
+            if (allocated(error)) return
+         end if
       end if
       call output%open(model, results_base(options), error)
       if (allocated(error)) return
@@ -253,6 +257,26 @@ contains
          ', step '//to_string(options%restart_step)//' increment '//to_string(options%restart_increment)// &
          ' (t = '//time_text(time)//')'
    end subroutine restart_state
+
+   !> The committed slip history of every contact pass, from the restart file.
+   subroutine restart_contact(options, context, error)
+      type(run_options_t), intent(in) :: options
+      type(newton_context_t), intent(inout) :: context
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: values(:, :)
+      integer :: p
+      do p = 1, size(context%contact%passes)
+         call get_contact_history(context%contact, p, values)   ! for the shape
+         call read_increment_array(options%restart_path, options%restart_step, options%restart_increment, &
+                                   'contact/pass'//to_string(p)//'_history', values, error)
+         if (allocated(error)) then
+            error%message = 'frix: restart from '//options%restart_path//': contact pass '// &
+                            to_string(p)//': '//error%message
+            return
+         end if
+         call set_contact_history(context%contact, p, values)
+      end do
+   end subroutine restart_contact
 
    !> Whether two paths name the same existing file (compared by their canonical form).
    function same_file(first, second) result(same)

@@ -16,7 +16,8 @@ module frix_results_output
    use frix_pos3d_writer, only: pos3d_writer_t
    use frix_hdf5_results, only: hdf5_results_t
    use frix_strings, only: to_string
-   use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels
+   use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, &
+                                    get_contact_history
    implicit none
    private
 
@@ -109,7 +110,8 @@ contains
       logical :: last_of_step, wanted
       integer :: n_nodes
       character(len=1), allocatable :: no_names(:)
-      real(dp), allocatable :: no_scalars(:, :)
+      real(dp), allocatable :: no_scalars(:, :), history_table(:, :)
+      integer :: p
 
       self%n_increments = self%n_increments + 1
       n_nodes = model%mesh%n_nodes
@@ -174,6 +176,10 @@ contains
             call self%hdf5%add_contact_array('gap', gap)
             call self%hdf5%add_contact_array('status', status)
             call self%hdf5%add_contact_array('slip', slip)
+            do p = 1, size(context%contact%passes)
+               call get_contact_history(context%contact, p, history_table)
+               call self%hdf5%add_contact_array('pass'//to_string(p)//'_history', history_table)
+            end do
          end if
          call self%hdf5%write_increment(step, increment, state%time, displacement, reaction, gp_stress, &
                                         gp_strain, state%committed_alpha, state%committed_history, error)
