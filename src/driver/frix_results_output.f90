@@ -52,7 +52,7 @@ contains
       integer :: slash, status, i
       slash = index(base, '/', back=.true.)
       if (slash > 1) then
-         call execute_command_line('mkdir -p "'//base(:slash - 1)//'"', exitstat=status)
+         call execute_command_line('mkdir -p "'//base(:slash - 1)//'" 2> /dev/null', exitstat=status)
          if (status /= 0) then
             call fatal_error(error, 'frix: cannot create the output directory "'//base(:slash - 1)//'"')
             return
