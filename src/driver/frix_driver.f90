@@ -330,20 +330,24 @@ contains
    function contact_nodes(model) result(in_contact)
       type(model_t), intent(in) :: model
       logical, allocatable :: in_contact(:)
-      integer :: p, k, surface
+      integer :: p
       allocate (in_contact(model%mesh%n_nodes), source=.false.)
       if (.not. allocated(model%contact_pairs)) return
       do p = 1, size(model%contact_pairs)
-         do surface = 1, size(model%mesh%surfaces)
-            if (surface /= model%contact_pairs(p)%slave_surface .and. &
-                surface /= model%contact_pairs(p)%master_surface) cycle
-            associate (faces => model%mesh%surfaces(surface))
-               do k = 1, size(faces%elements)
-                  in_contact(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(k)), faces%elements(k))) = .true.
-               end do
-            end associate
-         end do
+         call mark_surface(model%contact_pairs(p)%slave_surface)
+         call mark_surface(model%contact_pairs(p)%master_surface)   ! 0: rigid plane
       end do
+   contains
+      subroutine mark_surface(surface)
+         integer, intent(in) :: surface
+         integer :: k
+         if (surface == 0) return
+         associate (faces => model%mesh%surfaces(surface))
+            do k = 1, size(faces%elements)
+               in_contact(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(k)), faces%elements(k))) = .true.
+            end do
+         end associate
+      end subroutine mark_surface
    end function contact_nodes
 
    !> A pseudo time with 10 significant digits.

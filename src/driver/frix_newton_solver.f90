@@ -36,6 +36,7 @@ module frix_newton_solver
       real(dp), allocatable :: prescribed(:)
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
       real(dp), allocatable :: reactions(:) !! fint - fext on constrained equations, 0 elsewhere
+      real(dp), allocatable :: diagonal(:)  !! diagonal of the tangent just assembled
       logical :: quiet = .false.
       logical :: has_contact = .false.
       type(contact_system_t) :: contact     !! contact search, slip history, contact assembly
@@ -49,11 +50,12 @@ module frix_newton_solver
    type :: newton_report_t
       logical :: converged = .false.
       integer :: iterations = 0
-      real(dp) :: residual_norms(0:200) = 0.0_dp   !! ||r|| after each iteration (0: before the first solve)
-      real(dp) :: relative_norms(0:200) = 0.0_dp   !! ||r|| / reference
-      real(dp) :: energy_norms(0:200) = 0.0_dp     !! |du . r| of the correction leading there
-      integer :: active(0:200) = 0                 !! contact: slave nodes in contact
-      integer :: slipping(0:200) = 0               !! contact: slave nodes slipping
+      !> per residual evaluation 0 .. max_iterations (0: before the first solve)
+      real(dp), allocatable :: residual_norms(:)   !! ||r||
+      real(dp), allocatable :: relative_norms(:)   !! ||r|| / reference
+      real(dp), allocatable :: energy_norms(:)     !! |du . r| of the correction leading there
+      integer, allocatable :: active(:)            !! contact: slave nodes in contact
+      integer, allocatable :: slipping(:)          !! contact: slave nodes slipping
       character(len=:), allocatable :: failure     !! why it did not converge
    end type newton_report_t
 
@@ -93,7 +95,7 @@ contains
       if (allocated(error)) return
       allocate (context%fixed(n), context%prescribed(n))
       allocate (context%fint(n), context%fext(n), context%residual(n), context%correction(n), &
-                context%reactions(n), source=0.0_dp)
+                context%reactions(n), context%diagonal(n), source=0.0_dp)
    end subroutine setup_newton
 
    !> Iterate from the committed state to equilibrium at pseudo time `time`. On return
@@ -121,11 +123,15 @@ contains
       where (context%fixed) state%u = context%prescribed
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
+      allocate (report%residual_norms(0:max_iterations), report%relative_norms(0:max_iterations), &
+                report%energy_norms(0:max_iterations), source=0.0_dp)
+      allocate (report%active(0:max_iterations), report%slipping(0:max_iterations), source=0)
 
-      do iteration = 0, min(max_iterations, ubound(report%residual_norms, 1))
+      do iteration = 0, max_iterations
          call evaluate_equilibrium(model, context, state, time, .true., residual_norm, reference, &
                                    report%failure, error, predictor=iteration == 0)
          if (allocated(error) .or. allocated(report%failure)) return
+         call context%matrix%get_diagonal(context%diagonal)
          report%iterations = iteration
          report%residual_norms(iteration) = residual_norm
          report%relative_norms(iteration) = residual_norm/reference
@@ -143,7 +149,7 @@ contains
          end if
          u_norm = norm2(state%u)
          if (residual_norm <= max(model%controls%tol_residual*reference, &
-                                  roundoff_floor(model, context, state))) then
+                                  roundoff_floor(model, context, state%u))) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
                report%converged = .true.
@@ -160,7 +166,9 @@ contains
             return
          end if
 
-         diagonal_scale = mean_absolute_diagonal(context%matrix)
+         ! the value put on the diagonal of constrained equations: the mean |K_ii|
+         diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
+         if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
          call context%matrix%apply_dirichlet(context%fixed, diagonal_scale)
          call factorize_and_solve(model, context, inner_error)
          if (allocated(inner_error)) then
@@ -335,30 +343,24 @@ contains
    !> equation, which a relative test cannot beat when the load is small (the first small
    !> increments of a cut-back with stiff penalties). Returns roundoff_factor times
    !> epsilon ||K_ii |x_i| || over the free equations, with the diagonal of the tangent just
-   !> assembled and x the current coordinates.
-   function roundoff_floor(model, context, state) result(floor)
+   !> assembled (context%diagonal) and x = X + u the current coordinates.
+   function roundoff_floor(model, context, u) result(floor)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(in) :: context
-      type(analysis_state_t), intent(in) :: state
+      real(dp), intent(in) :: u(:)
       real(dp) :: floor
       real(dp), parameter :: roundoff_factor = 10.0_dp
-      real(dp), allocatable :: diagonal(:), position(:)
-      allocate (diagonal(context%matrix%n))
-      call context%matrix%get_diagonal(diagonal)
-      position = reshape(model%mesh%coords, [size(state%u)]) + state%u
-      floor = roundoff_factor*epsilon(1.0_dp)*norm2(merge(diagonal*position, 0.0_dp, .not. context%fixed))
+      integer :: node, i, equation
+      floor = 0.0_dp
+      do node = 1, model%mesh%n_nodes
+         do i = 1, 3
+            equation = 3*(node - 1) + i
+            if (context%fixed(equation)) cycle
+            floor = floor + (context%diagonal(equation)*(model%mesh%coords(i, node) + u(equation)))**2
+         end do
+      end do
+      floor = roundoff_factor*epsilon(1.0_dp)*sqrt(floor)
    end function roundoff_floor
-
-   !> Mean |K_ii|, the value put on the diagonal of constrained equations.
-   function mean_absolute_diagonal(matrix) result(scale)
-      type(sparse_matrix_t), intent(in) :: matrix
-      real(dp) :: scale
-      real(dp), allocatable :: diagonal(:)
-      allocate (diagonal(matrix%n))
-      call matrix%get_diagonal(diagonal)
-      scale = sum(abs(diagonal))/max(1, matrix%n)
-      if (scale == 0.0_dp) scale = 1.0_dp
-   end function mean_absolute_diagonal
 
    subroutine print_progress(label, time, iteration, residual_norm, relative_norm, energy, &
                              contact, active, slipping)

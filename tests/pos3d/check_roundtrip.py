@@ -26,27 +26,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from pos3d_reader import Pos3dError, brick_volumes, read_pos3d, TECGRAF_BRICK8_SIGNS  # noqa: E402
 
-passed, failed = 0, 0
-
-
-def check(condition, label):
-    global passed, failed
-    if condition:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAILED: {label}")
-
-
-def close(actual, expected, rel, label):
-    actual, expected = np.asarray(actual, float), np.asarray(expected, float)
-    ok = actual.shape == expected.shape and bool(
-        np.all(np.abs(actual - expected) <= rel * max(np.abs(expected).max(initial=0.0), 1e-300)))
-    if not ok and actual.shape == expected.shape:
-        print(f"  max difference {np.abs(actual - expected).max():.3e} (scale {np.abs(expected).max():.3e})")
-    elif not ok:
-        print(f"  shapes {actual.shape} vs {expected.shape}")
-    check(ok, label)
+from check_tools import check, close, summary  # noqa: E402
 
 
 def nodal_from_gauss(model, gauss, n_nodes):
@@ -91,8 +71,7 @@ def main(base):
         nodal = nodal_from_gauss(model, gauss, len(model.coords))
         close(nodal[:, vtk_order], mesh.point_data["stress"], 1e-12,
               f"{name}: nodal stress extrapolated with point k beside Tecgraf node k")
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -29,25 +29,7 @@ from pos3d_reader import (Pos3dError, brick_volumes, gauss_point_positions,  # n
                           read_pos3d, _trilinear_jacobians, TECGRAF_BRICK8_SIGNS, VTK_HEXAHEDRON_SIGNS)
 
 NX, NY, NZ = 3, 2, 2
-passed, failed = 0, 0
-
-
-def check(condition, label):
-    global passed, failed
-    if condition:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAILED: {label}")
-
-
-def close(actual, expected, rel, label):
-    actual, expected = np.asarray(actual, float), np.asarray(expected, float)
-    ok = actual.shape == expected.shape and bool(
-        np.all(np.abs(actual - expected) <= rel * max(np.abs(expected).max(initial=0.0), 1e-300)))
-    if not ok and actual.shape == expected.shape:
-        print(f"  max difference {np.abs(actual - expected).max():.3e} (scale {np.abs(expected).max():.3e})")
-    check(ok, label)
+from check_tools import check, close, summary  # noqa: E402
 
 
 def node_number(i, j, k):
@@ -160,8 +142,7 @@ def main(directory):
 
     bad = read_pos3d(os.path.join(directory, "bad.pos"))
     check(len(bad.steps) == 0 and not bad.result_labels, "bad.pos: failed steps left a model-only file")
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return summary()
 
 
 if __name__ == "__main__":
