@@ -63,3 +63,4 @@ write v5_u3_2pass_coulomb    3 upper_zmin lower_zmax 2 "$co" "Coulomb MU 0.3, EP
 write v5_u3_1pass_coulomb    3 upper_zmin lower_zmax 1 "$co" "Coulomb MU 0.3, EPST 1e8: same nu in both blocks, so no tangential traction and no slip."
 write v5_u4_matching_1pass   4 upper_zmin lower_zmax 1 "$fl" "Control: MATCHING meshes (4 x 4 on 4 x 4), frictionless, one pass: must pass exactly."
 sed "s/EPSN 1e8 (penetration p\/EPSN = 1e-6/EPSN 1e10 (penetration p\/EPSN = 1e-8/; s/EPSN 1.0e8 GAPTOL/EPSN 1.0e10 GAPTOL/" v5_u3_2pass.dck > v5_u3_2pass_eps1e10.dck
+sed "s/EPSN 1e8 (penetration p\/EPSN = 1e-6/EPSN 1e10 (penetration p\/EPSN = 1e-8/; s/EPSN 1.0e8 GAPTOL/EPSN 1.0e10 GAPTOL/" v5_u3_2pass_coulomb.dck > v5_u3_2pass_coulomb_eps1e10.dck

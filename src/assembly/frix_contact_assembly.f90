@@ -20,7 +20,8 @@
 !> Slip history: every slave node starts with the closest point of its reference position as
 !> anchor (master face and face coordinates, or a point of the rigid plane), so friction acts
 !> from the first increment; the anchor is committed at every converged increment; when a node
-!> has moved to another face, its anchor's current position is projected onto the new face.
+!> has moved to another face, its anchor stays a material point of the old face (whose nodes
+!> then enter the node's tangent) until a converged increment carries it over onto the new face.
 module frix_contact_assembly
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -32,12 +33,14 @@ module frix_contact_assembly
                                    face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
                                   contact_open, contact_stick, contact_slip
+   use frix_friction_law, only: branch_free, branch_stick, branch_slip
    implicit none
    private
 
    public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
    public :: contact_history_rows, get_contact_history, set_contact_history
+   public :: reset_friction_branches, release_inconsistent_branches
 
    !> One pass: the nodes of a slave surface against the faces of a master surface or a plane.
    type :: contact_pass_t
@@ -49,6 +52,12 @@ module frix_contact_assembly
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
       ! the current iterate
       integer, allocatable :: face(:)          !! master face of each slave node, 0: none
+      !> friction branch imposed on each slave node in this increment (branch_free: the law
+      !> decides; branch_stick after a slip reversal, see assemble_contact)
+      integer, allocatable :: branch(:)
+      logical, allocatable :: released(:)          !! imposed once and released: not again
+      logical, allocatable :: slipped(:)           !! slipping at the last iterate
+      real(dp), allocatable :: slip_direction(:, :)  !! (3, n_slave) t/|t| at the last iterate
       type(contact_point_result_t), allocatable :: result(:)
       ! the last converged increment
       integer, allocatable :: anchor_face(:)
@@ -155,6 +164,9 @@ contains
       end if
       pass%band = max(pass%band, model%contact_pairs(pair)%parameters%gap_tolerance)
       allocate (pass%face(n_slave), pass%anchor_face(n_slave), source=0)
+      allocate (pass%branch(n_slave), source=branch_free)
+      allocate (pass%released(n_slave), pass%slipped(n_slave), source=.false.)
+      allocate (pass%slip_direction(3, n_slave), source=0.0_dp)
       allocate (pass%result(n_slave))
       allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
                 source=0.0_dp)
@@ -205,7 +217,7 @@ contains
       real(dp), intent(in) :: u(:)
       type(sparse_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
-      integer :: p, i, a, slave
+      integer :: p, i, a, b, n_nodes, nodes(9)
       logical :: missing
 
       missing = .false.
@@ -215,12 +227,14 @@ contains
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) cycle
-               slave = pass%slave_nodes(i)
-               do a = 1, 4
-                  if (matrix%neighbour_index(slave, pass%faces(a, pass%face(i))) == 0) then
-                     call add_extra_pair(system, slave, pass%faces(a, pass%face(i)))
-                     missing = .true.
-                  end if
+               call kernel_nodes(pass, i, nodes, n_nodes)
+               do a = 1, n_nodes - 1
+                  do b = a + 1, n_nodes
+                     if (matrix%neighbour_index(nodes(a), nodes(b)) == 0) then
+                        call add_extra_pair(system, nodes(a), nodes(b))
+                        missing = .true.
+                     end if
+                  end do
                end do
             end do
          end associate
@@ -244,6 +258,22 @@ contains
       system%n_extra = system%n_extra + 1
       system%extra_pairs(:, system%n_extra) = [first, second]
    end subroutine add_extra_pair
+
+   !> The nodes of slave i's contact kernel: the slave, its master face's 4 nodes and, when its
+   !> committed anchor lies on another face, that face's 4 nodes (n_nodes = 5 or 9).
+   pure subroutine kernel_nodes(pass, i, nodes, n_nodes)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: i
+      integer, intent(out) :: nodes(9), n_nodes
+      nodes = 0
+      nodes(1) = pass%slave_nodes(i)
+      nodes(2:5) = pass%faces(:, pass%face(i))
+      n_nodes = 5
+      if (pass%has_anchor(i) .and. pass%anchor_face(i) /= pass%face(i) .and. pass%anchor_face(i) > 0) then
+         nodes(6:9) = pass%faces(:, pass%anchor_face(i))
+         n_nodes = 9
+      end if
+   end subroutine kernel_nodes
 
    !> The nearest master face of every slave node of a deformable pass (bucket grid search).
    subroutine assign_faces(model, pass, u)
@@ -360,10 +390,9 @@ contains
       real(dp), intent(inout) :: fint(:)
       type(sparse_matrix_t), intent(inout), optional :: matrix
       logical, intent(in), optional :: predictor  !! first iteration of an increment: add the touching stiffness
-      real(dp) :: x_slave(3), x_face(3, 4), anchor_xi(2), force(15), tangent(15, 15)
-      real(dp) :: force3(3), tangent3(3, 3), x_anchor(3), v(15), normal(3), shape(4), d_xi(4), d_eta(4)
-      integer :: p, i, a, k, slave, nodes(5), node
-      logical :: has_anchor, fixed(2)
+      real(dp) :: x_slave(3), x_face(3, 4), force(27), tangent(27, 27)
+      real(dp) :: force3(3), tangent3(3, 3), v(15), normal(3), shape(4), d_xi(4), d_eta(4)
+      integer :: p, i, a, k, slave, nodes(9), n_nodes, n, node, attempt
       real(dp) :: touch_normal, touch_tangential, directions(3, 3), weights(3)
       logical :: touching_stiffness
       real(dp), parameter :: identity(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
@@ -381,9 +410,12 @@ contains
                slave = pass%slave_nodes(i)
                x_slave = model%mesh%coords(:, slave) + u(3*slave - 2:3*slave)
                if (pass%rigid) then
-                  call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
-                                          pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
-                                          pass%result(i), force3, tangent3)
+                  do attempt = 1, 2
+                     call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
+                                             pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
+                                             pass%result(i), force3, tangent3, branch=pass%branch(i))
+                     if (.not. (present(matrix) .and. slip_reversed(pass, i))) exit
+                  end do
                   if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                       pass%result(i)%gap <= pair%parameters%gap_tolerance) then
                      ! touching: normal (and, with friction, stick) stiffness without force
@@ -402,19 +434,22 @@ contains
                   pass%result(i)%gap = huge(1.0_dp)
                   cycle
                end if
-               nodes(1) = slave
-               nodes(2:5) = pass%faces(:, pass%face(i))
+               call kernel_nodes(pass, i, nodes, n_nodes)
+               n = 3*n_nodes
                x_face = current_face(model, u, nodes(2:5))
-               has_anchor = pass%has_anchor(i)
-               anchor_xi = pass%anchor_xi(:, i)
-               if (has_anchor .and. pass%anchor_face(i) /= pass%face(i)) then
-                  ! the node moved to another face: carry its anchor over by projection
-                  x_anchor = face_position(current_face(model, u, pass%faces(:, pass%anchor_face(i))), &
-                                           pass%anchor_xi(:, i))
-                  call closest_point_in_face(x_face, x_anchor, 0.0_dp, anchor_xi, fixed)
-               end if
-               call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), anchor_xi, has_anchor, &
-                                      .true., pass%result(i), force, tangent)
+               do attempt = 1, 2
+                  if (n_nodes == 9) then
+                     ! the node moved off its anchor's face: the anchor stays a point of that face
+                     call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
+                                            pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
+                                            x_anchor_face=current_face(model, u, nodes(6:9)), branch=pass%branch(i))
+                  else
+                     call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
+                                            pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
+                                            branch=pass%branch(i))
+                  end if
+                  if (.not. (present(matrix) .and. slip_reversed(pass, i))) exit
+               end do
                if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                    pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= pair%parameters%gap_tolerance) then
                   ! touching: stiffness A (eps_N v_n v_n^T + eps_T sum_t v_t v_t^T) without force,
@@ -431,7 +466,7 @@ contains
                         v(3*a + 1:3*a + 3) = -shape(a)*directions(:, k)
                      end do
                      do a = 1, 15
-                        tangent(:, a) = tangent(:, a) + weights(k)*pass%area(i)*v*v(a)
+                        tangent(:15, a) = tangent(:15, a) + weights(k)*pass%area(i)*v*v(a)
                      end do
                   end do
                end if
@@ -439,11 +474,42 @@ contains
                   node = nodes(a)
                   fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + force(3*a - 2:3*a)
                end do
-               if (present(matrix)) call matrix%add_element(nodes, tangent)
+               if (present(matrix)) call matrix%add_element(nodes(:n_nodes), tangent(:n, :n))
             end do
          end associate
       end do
    end subroutine assemble_contact
+
+   !> Slip reversal (called at each Newton iterate, after slave i's evaluation): a node that
+   !> slipped at the previous iterate and now slips the opposite way (t . t_previous < 0) has
+   !> its solution in between, in the stick zone of width 2 mu p_N / eps_T around its anchor.
+   !> The slip branch cannot find it: its traction +-mu p_N jumps across the zone and its
+   !> tangent has no stiffness along the slip (Newton alternates between the two sides, as
+   !> for a relay). The node is then held in stick (linear in g_T: one Newton step lands in
+   !> the zone) until a converged iterate where the law chooses slip releases it
+   !> (release_inconsistent_branches). Returns .true. when the node has just been put in
+   !> stick and must be evaluated again.
+   logical function slip_reversed(pass, i) result(reversed)
+      type(contact_pass_t), intent(inout) :: pass
+      integer, intent(in) :: i
+      real(dp) :: magnitude, direction(3)
+      reversed = .false.
+      magnitude = norm2(pass%result(i)%traction)
+      if (pass%result(i)%status /= contact_slip .or. .not. magnitude > 0.0_dp) then
+         pass%slipped(i) = .false.
+         return
+      end if
+      direction = pass%result(i)%traction/magnitude
+      if (pass%slipped(i) .and. pass%branch(i) == branch_free .and. .not. pass%released(i)) then
+         reversed = dot_product(direction, pass%slip_direction(:, i)) < 0.0_dp
+      end if
+      pass%slipped(i) = .true.
+      pass%slip_direction(:, i) = direction
+      if (reversed) then
+         pass%branch(i) = branch_stick
+         pass%slipped(i) = .false.
+      end if
+   end function slip_reversed
 
    !> Two unit vectors completing the unit vector n to an orthonormal basis.
    pure subroutine tangent_basis(normal, first, second)
@@ -463,6 +529,7 @@ contains
    subroutine commit_contact(system)
       type(contact_system_t), intent(inout) :: system
       integer :: p, i
+      call reset_friction_branches(system)
       do p = 1, size(system%passes)
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
@@ -482,6 +549,38 @@ contains
          end associate
       end do
    end subroutine commit_contact
+
+   !> Start of an increment: the friction law decides every node's branch again.
+   subroutine reset_friction_branches(system)
+      type(contact_system_t), intent(inout) :: system
+      integer :: p
+      do p = 1, size(system%passes)
+         system%passes(p)%branch = branch_free
+         system%passes(p)%released = .false.
+         system%passes(p)%slipped = .false.
+      end do
+   end subroutine reset_friction_branches
+
+   !> At a converged iterate: the nodes held in stick after a slip reversal whose trial
+   !> traction lies outside the friction cone (the law chooses slip) are handed back to the
+   !> law for the rest of the increment. Returns how many: 0 means the iterate solves the
+   !> true problem.
+   integer function release_inconsistent_branches(system) result(n_released)
+      type(contact_system_t), intent(inout) :: system
+      integer :: p, i
+      n_released = 0
+      do p = 1, size(system%passes)
+         associate (pass => system%passes(p))
+            do i = 1, size(pass%slave_nodes)
+               if (pass%branch(i) == branch_free .or. pass%result(i)%status == contact_open) cycle
+               if (pass%result(i)%status == pass%result(i)%law_status) cycle
+               pass%branch(i) = branch_free
+               pass%released(i) = .true.
+               n_released = n_released + 1
+            end do
+         end associate
+      end do
+   end function release_inconsistent_branches
 
    !> Slave nodes in contact (stick or slip) and slipping, over all passes.
    subroutine contact_counts(system, n_active, n_slipping)

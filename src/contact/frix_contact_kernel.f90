@@ -15,11 +15,15 @@
 !>   COMMITTED one (last converged increment); the updated anchor is returned for commit:
 !>   on slip, the face point x(xi*) + t/eps_T (with x(xi*) replaced by the foot x_s - g n when
 !>   clamped) projected onto the face, where -eps_T g_T equals t.
+!>   The anchor may lie on another face than the contact face (the node slid onto a
+!>   neighbouring face since the last converged increment): x_A = sum N_a(xi_A) x_a over THAT
+!>   face's nodes, which then enter the linearization as 12 more unknowns.
 !> Forces: on the slave f = A_s (p_N n + t); on master node a: -N_a(xi*) f. The kernel returns
 !>   the contribution to the INTERNAL force vector (frix: residual = fext - fint),
-!>   fint = -(forces on the nodes), node-major [slave xyz, master 1 xyz, ..., master 4 xyz],
-!>   and tangent = d fint / d u (exact derivative of the discrete algorithm, unsymmetric in
-!>   slip), both in force units (tangent: force/length).
+!>   fint = -(forces on the nodes), node-major [slave xyz, master 1 xyz, ..., master 4 xyz,
+!>   (anchor face node 1 xyz, ..., 4 xyz: zero force)], and tangent = d fint / d u (exact
+!>   derivative of the discrete algorithm, unsymmetric in slip), both in force units
+!>   (tangent: force/length).
 module frix_contact_kernel
    use frix_kinds, only: dp
    use frix_dual_number, only: dual_t, dual_constant, dual_variable, dual_dot, dual_cross, dual_norm, &
@@ -27,6 +31,7 @@ module frix_contact_kernel
    use frix_face_projection, only: face_node_xi, face_node_eta, face_shape_functions, face_position, &
                                    face_normal, project_onto_face, closest_point_in_face, face_contains
    use frix_contact_parameters, only: contact_parameters_t
+   use frix_friction_law, only: branch_free
    implicit none
    private
 
@@ -44,6 +49,9 @@ module frix_contact_kernel
       real(dp) :: traction(3) = 0.0_dp     !! tangential traction t on the slave (force/area)
       real(dp) :: normal(3) = 0.0_dp       !! n at the contact point (out of the master body)
       integer :: status = contact_open     !! contact_open, contact_stick or contact_slip
+      !> the status the friction law itself chooses; differs from `status` only where the
+      !> caller imposed a friction branch
+      integer :: law_status = contact_open
       logical :: outside = .false.         !! closest point beyond an edge (|xi_k| > 1 + tol) or not found
       logical :: clamped = .false.         !! the clamped closest point (on an edge/corner) was used
       real(dp) :: xi(2) = 0.0_dp           !! face coordinates of the contact point
@@ -64,8 +72,11 @@ contains
 
    !> One slave node against one bilinear master face.
    !>
-   !> The anchor is the committed slip history of the node on THIS face (face coordinates,
-   !> may lie slightly outside [-1, 1]^2). With has_anchor = .false. the anchor is the foot
+   !> The anchor is the committed slip history of the node: face coordinates (may lie slightly
+   !> outside [-1, 1]^2) on this face, or on the face x_anchor_face when the node has moved
+   !> off the face of its anchor; the anchor face's nodes are then unknowns 16-27 of the
+   !> tangent (their force entries are zero), and a stick state commits the anchor's closest
+   !> point on this face. With has_anchor = .false. the anchor is the foot
    !> x_s - g n of the CURRENT position, moving with it: g_T = 0 identically, so the node
    !> sticks with zero traction and no tangential stiffness (a consistent fallback; callers
    !> should pass the committed anchor instead). For an open node the returned new anchor is the
@@ -76,23 +87,35 @@ contains
    !> caller should try the neighbouring face); with `clamp` the closest point of the bounded
    !> face (on an edge or a corner) and the face normal there are used.
    subroutine node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                result, fint, tangent)
+                                result, fint, tangent, x_anchor_face, branch)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)      !! current slave position X + u
       real(dp), intent(in) :: x_master(3, 4)  !! current master face nodes, outward (HEX8 face) order
       real(dp), intent(in) :: area            !! A_s, the slave node's tributary area
-      real(dp), intent(in) :: anchor_xi(2)    !! committed anchor (face coordinates)
-      logical, intent(in) :: has_anchor       !! .false.: no committed anchor on this face
+      !> committed anchor: face coordinates on x_master, or on x_anchor_face when present
+      real(dp), intent(in) :: anchor_xi(2)
+      logical, intent(in) :: has_anchor       !! .false.: no committed anchor
       logical, intent(in) :: clamp            !! use the closest point of the bounded face
       type(contact_point_result_t), intent(out) :: result
-      real(dp), intent(out) :: fint(15)       !! internal force contribution (force)
-      real(dp), intent(out) :: tangent(15, 15)  !! d fint / d u (force/length)
-      type(dual_t) :: xs(3), xm(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
+      !> internal force contribution (force): 15 entries, 27 with x_anchor_face
+      real(dp), intent(out) :: fint(:)
+      !> d fint / d u (force/length): 15 x 15, 27 x 27 with x_anchor_face
+      real(dp), intent(out) :: tangent(:, :)
+      !> current nodes of the face that carries the anchor, when it is not x_master's face
+      real(dp), intent(in), optional :: x_anchor_face(3, 4)
+      !> friction branch to evaluate in contact (frix_friction_law: branch_free (default),
+      !> branch_stick, branch_slip)
+      integer, intent(in), optional :: branch
+      type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), trial(3), traction(3), force(3), fd(15)
-      real(dp) :: xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4)
-      logical :: converged, fixed(2), slipping
-      integer :: a, k
+      real(dp) :: xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
+      logical :: converged, fixed(2), slipping, law_slipping, other_face
+      integer :: a, k, n_unknowns, used_branch
 
+      other_face = present(x_anchor_face)
+      used_branch = branch_free
+      if (present(branch)) used_branch = branch
+      n_unknowns = merge(27, 15, other_face)
       fint = 0.0_dp
       tangent = 0.0_dp
       call project_onto_face(x_master, x_slave, xi_start, converged)
@@ -119,6 +142,13 @@ contains
       do a = 1, 4
          xm(:, a) = dual_variable(x_master(:, a), 3*a + 1)
       end do
+      if (other_face) then
+         do a = 1, 4
+            xa(:, a) = dual_variable(x_anchor_face(:, a), 3*a + 13)
+         end do
+      else
+         xa = xm
+      end if
 
       xi = dual_constant(xi_start)
       if (any(fixed)) then
@@ -145,23 +175,31 @@ contains
 
       pressure = parameters%normal_penalty*(-gap)
       used_anchor_xi = result%xi
-      if (has_anchor) used_anchor_xi = anchor_xi
+      old_anchor = x%value
+      if (has_anchor) then
+         call face_shape_functions(anchor_xi, shape_real, d_xi, d_eta)
+         do k = 1, 3
+            anchor_point(k) = dual_dot(dual_constant(shape_real), xa(k, :))
+         end do
+         old_anchor = anchor_point%value
+         used_anchor_xi = anchor_xi
+         if (other_face) then
+            ! what a stick state commits: the anchor carried over onto the contact face
+            call project_onto_face(x_master, old_anchor, used_anchor_xi, converged, initial_xi=result%xi)
+            if (.not. converged) call closest_point_in_face(x_master, old_anchor, 0.0_dp, used_anchor_xi, fixed)
+         end if
+      end if
       if (parameters%friction%frictionless()) then
          traction = dual_constant(0.0_dp)
          result%status = contact_slip
+         result%law_status = contact_slip
          result%new_anchor_xi = result%xi
       else
-         if (has_anchor) then
-            call face_shape_functions(anchor_xi, shape_real, d_xi, d_eta)
-            do k = 1, 3
-               anchor_point(k) = dual_dot(dual_constant(shape_real), xm(k, :))
-            end do
-         else
-            anchor_point = xs - gap*normal   ! the foot: g_T = 0 identically
-         end if
+         if (.not. has_anchor) anchor_point = xs - gap*normal   ! the foot: g_T = 0 identically
          relative = xs - anchor_point
          trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, normal)*normal)
-         call parameters%friction%return_map(trial, pressure, traction, slipping)
+         call parameters%friction%return_map(trial, pressure, used_branch, traction, slipping, law_slipping)
+         result%law_status = merge(contact_slip, contact_stick, law_slipping)
          if (slipping) then
             result%status = contact_slip
             target = x_slave - result%gap*result%normal + traction%value/parameters%tangential_penalty
@@ -175,7 +213,8 @@ contains
       result%pressure = pressure%value
       result%traction = traction%value
       result%new_anchor = face_position(x_master, result%new_anchor_xi)
-      if (has_anchor) result%slip_increment = norm2(result%new_anchor - face_position(x_master, anchor_xi))
+      if (has_anchor .and. result%status == contact_slip) &
+         result%slip_increment = norm2(result%new_anchor - old_anchor)
 
       force = area*(pressure*normal + traction)
       fd(1:3) = -force
@@ -184,7 +223,7 @@ contains
       end do
       do k = 1, 15
          fint(k) = fd(k)%value
-         tangent(k, :) = fd(k)%gradient
+         tangent(k, :) = fd(k)%gradient(:n_unknowns)
       end do
    end subroutine node_face_contact
 
@@ -196,7 +235,7 @@ contains
    !> fint = -A_s (p_N n + t) and tangent = d fint / d u_s (3 x 3). For an open node the new
    !> anchor is the foot point.
    subroutine node_plane_contact(parameters, x_slave, plane_point, plane_normal, area, anchor, has_anchor, &
-                                 result, fint, tangent)
+                                 result, fint, tangent, branch)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)       !! current slave position X + u
       real(dp), intent(in) :: plane_point(3)   !! a point P of the plane
@@ -207,13 +246,16 @@ contains
       type(contact_point_result_t), intent(out) :: result
       real(dp), intent(out) :: fint(3)         !! internal force contribution (force)
       real(dp), intent(out) :: tangent(3, 3)   !! d fint / d u_s (force/length)
+      integer, intent(in), optional :: branch  !! friction branch, as for node_face_contact
       type(dual_t) :: xs(3), gap, pressure, relative(3), trial(3), traction(3), force(3)
       real(dp) :: normal(3), foot(3), used_anchor(3)
-      logical :: slipping
-      integer :: k
+      logical :: slipping, law_slipping
+      integer :: k, used_branch
 
       fint = 0.0_dp
       tangent = 0.0_dp
+      used_branch = branch_free
+      if (present(branch)) used_branch = branch
       normal = unit(plane_normal)
       xs = dual_variable(x_slave, 1)
       gap = dual_dot(xs - plane_point, dual_constant(normal))
@@ -232,14 +274,16 @@ contains
       if (parameters%friction%frictionless()) then
          traction = dual_constant(0.0_dp)
          result%status = contact_slip
+         result%law_status = contact_slip
       else
          if (has_anchor) then
-         relative = xs - used_anchor
-      else
-         relative = gap*normal   ! anchor at the foot: g_T = 0 identically
-      end if
+            relative = xs - used_anchor
+         else
+            relative = gap*normal   ! anchor at the foot: g_T = 0 identically
+         end if
          trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, dual_constant(normal))*normal)
-         call parameters%friction%return_map(trial, pressure, traction, slipping)
+         call parameters%friction%return_map(trial, pressure, used_branch, traction, slipping, law_slipping)
+         result%law_status = merge(contact_slip, contact_stick, law_slipping)
          if (slipping) then
             result%status = contact_slip
             result%new_anchor = foot + traction%value/parameters%tangential_penalty

@@ -10,7 +10,7 @@
 module frix_coulomb_friction
    use frix_kinds, only: dp
    use frix_dual_number, only: dual_t, dual_norm, dual_constant, operator(*), operator(/)
-   use frix_friction_law, only: friction_law_t
+   use frix_friction_law, only: friction_law_t, branch_free, branch_stick, branch_slip
    implicit none
    private
 
@@ -37,22 +37,33 @@ contains
       end if
    end function new_coulomb_friction
 
-   pure subroutine return_map(self, trial_traction, pressure, traction, slipping)
+   !> Coulomb return mapping (see the module head) of the branch `branch`.
+   pure subroutine return_map(self, trial_traction, pressure, branch, traction, slipping, law_slipping)
       class(coulomb_friction_t), intent(in) :: self
       type(dual_t), intent(in) :: trial_traction(3)
       type(dual_t), intent(in) :: pressure
+      integer, intent(in) :: branch
       type(dual_t), intent(out) :: traction(3)
-      logical, intent(out) :: slipping
+      logical, intent(out) :: slipping, law_slipping
       real(dp) :: trial_magnitude
       if (self%frictionless()) then
          traction = dual_constant(0.0_dp)
          slipping = .true.
+         law_slipping = .true.
          return
       end if
       trial_magnitude = norm2(trial_traction%value)
-      slipping = trial_magnitude > self%coefficient*pressure%value
+      law_slipping = trial_magnitude > self%coefficient*pressure%value
+      select case (branch)
+      case (branch_stick)
+         slipping = .false.
+      case (branch_slip)
+         slipping = trial_magnitude > 0.0_dp   ! no direction to slip in at t_trial = 0
+      case default
+         slipping = law_slipping
+      end select
       if (slipping) then
-         ! trial_magnitude > mu p_N >= 0: the norm is differentiable here.
+         ! trial_magnitude > 0: the norm is differentiable here.
          traction = (self%coefficient*pressure)*(trial_traction/dual_norm(trial_traction))
       else
          traction = trial_traction

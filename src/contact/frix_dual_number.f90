@@ -1,8 +1,8 @@
 !> Forward-mode automatic differentiation with dual numbers of a fixed gradient length.
 !>
 !> A dual number carries a value v and its gradient dv/dq with respect to up to `dual_size`
-!> seeded unknowns q (for the contact kernel: the 15 current coordinates of a slave node and
-!> a 4-node master face). Every operation applies the chain rule to the gradient, so a
+!> seeded unknowns q (for the contact kernel: the 27 current coordinates of a slave node, its
+!> 4-node master face and the 4-node face that carries its slip anchor). Every operation applies the chain rule to the gradient, so a
 !> computation written with `dual_t` yields the exact derivative of the discrete algorithm it
 !> performs (Griewank & Walther, *Evaluating Derivatives*, 2nd ed., SIAM 2008, ch. 3; this is
 !> how AceGen-generated contact elements obtain consistent tangents, Korelc & Wriggers,
@@ -25,7 +25,7 @@ module frix_dual_number
    public :: operator(<), operator(<=), operator(>), operator(>=)
    public :: sqrt, abs, assignment(=)
 
-   integer, parameter :: dual_size = 15  !! maximum number of seeded unknowns
+   integer, parameter :: dual_size = 27  !! maximum number of seeded unknowns
 
    !> A value and its gradient with respect to the seeded unknowns.
    type :: dual_t

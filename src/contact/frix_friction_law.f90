@@ -13,6 +13,14 @@ module frix_friction_law
    private
 
    public :: friction_law_t
+   public :: branch_free, branch_stick, branch_slip
+
+   !> Which branch return_map evaluates: the law's own choice, or one imposed by the caller
+   !> (the Newton iterations freeze the stick/slip statuses when they cycle, see
+   !> docs/solver.md).
+   integer, parameter :: branch_free = 0
+   integer, parameter :: branch_stick = 1
+   integer, parameter :: branch_slip = 2
 
    type, abstract :: friction_law_t
       character(len=:), allocatable :: name   !! deck keyword of the law, e.g. COULOMB
@@ -25,13 +33,16 @@ module frix_friction_law
    end type friction_law_t
 
    abstract interface
-      pure subroutine return_map_interface(self, trial_traction, pressure, traction, slipping)
+      pure subroutine return_map_interface(self, trial_traction, pressure, branch, traction, slipping, &
+                                           law_slipping)
          import :: friction_law_t, dual_t
          class(friction_law_t), intent(in) :: self
          type(dual_t), intent(in) :: trial_traction(3)  !! t_trial (force/area), tangential
          type(dual_t), intent(in) :: pressure           !! p_N >= 0 (force/area)
+         integer, intent(in) :: branch                  !! branch_free, branch_stick or branch_slip
          type(dual_t), intent(out) :: traction(3)       !! t on the slave (force/area)
-         logical, intent(out) :: slipping               !! .true.: slip branch taken
+         logical, intent(out) :: slipping               !! .true.: slip branch evaluated
+         logical, intent(out) :: law_slipping           !! .true.: the law's own choice is slip
       end subroutine return_map_interface
 
       pure logical function frictionless_interface(self)

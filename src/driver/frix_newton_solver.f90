@@ -6,7 +6,9 @@
 !>   ||du|| <= TOLDISP * ||u||  for the last correction du   (displacement criterion);
 !> an iterate whose residual is already below 1e-4 TOLRESID times the reference is accepted
 !> without the displacement criterion (the response was linear, as in Abaqus' "zero residual"
-!> rule). The energy norm printed per iteration is |du . r| of the correction just made.
+!> rule). With contact, an iterate is converged only when no slave node is held in a friction
+!> branch other than the law's own (slip reversal, frix_contact_assembly). The energy norm
+!> printed per iteration is |du . r| of the correction just made.
 module frix_newton_solver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -19,7 +21,8 @@ module frix_newton_solver
    use frix_assembler, only: assemble_internal
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
    use frix_contact_assembly, only: contact_system_t, setup_contact, search_contact, assemble_contact, &
-                                    contact_counts
+                                    contact_counts, reset_friction_branches, &
+                                    release_inconsistent_branches
    implicit none
    private
 
@@ -44,6 +47,7 @@ module frix_newton_solver
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
       integer :: n_backtracks = 0              !! step halvings of the contact line search
+      integer :: n_releases = 0                !! converged iterates where held nodes were released
    end type newton_context_t
 
    !> What happened in one increment.
@@ -113,12 +117,13 @@ contains
       type(newton_report_t), intent(out) :: report
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: inner_error
-      integer :: iteration
+      integer :: iteration, n_released
       real(dp) :: residual_norm, reference, correction_norm, u_norm, energy
       real(dp) :: diagonal_scale
 
       state%time = time
       context%use_fallback = .false.
+      if (context%has_contact) call reset_friction_branches(context%contact)
       call prescribed_displacements(model, time, context%fixed, context%prescribed)
       where (context%fixed) state%u = context%prescribed
       correction_norm = huge(1.0_dp)
@@ -152,8 +157,26 @@ contains
                                   roundoff_floor(model, context, state%u))) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
-               report%converged = .true.
-               return
+               if (.not. context%has_contact) then
+                  report%converged = .true.
+                  return
+               end if
+               ! nodes held in stick after a slip reversal that the law would let slip?
+               n_released = release_inconsistent_branches(context%contact)
+               if (n_released == 0) then
+                  report%converged = .true.
+                  return
+               end if
+               context%n_releases = context%n_releases + 1
+               if (.not. context%quiet) write (*, '(2x,i0,a)') n_released, &
+                  ' nodes held in stick released to slip'
+               if (iteration >= max_iterations) then
+                  report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'
+                  return
+               end if
+               energy = 0.0_dp
+               correction_norm = huge(1.0_dp)
+               cycle
             end if
          end if
          if (iteration >= max_iterations) then
@@ -246,11 +269,20 @@ contains
       if (reference == 0.0_dp) reference = 1.0_dp
    end subroutine evaluate_equilibrium
 
-   !> Backtracking after a Newton correction du with contact: when the residual at u + du is
+   !> Line search after a Newton correction du with contact, when the residual at u + du is
    !> larger than before the correction (penalty contact overshoots as nodes enter or leave
-   !> contact), the step is halved, u + du/2, u + du/4, ..., at most `max_backtracks` times.
-   !> If no trial lowers the residual, the trial with the smallest residual is kept. The
-   !> correction norm reported is the one of the accepted step.
+   !> contact or cross a stick/slip boundary). The step u + s du is searched for a root of
+   !> the directional energy g(s) = du . r(u + s du): g(0) = du . r > 0 and g(1) < 0 bracket
+   !> the point where the work of the residual along du vanishes (Crisfield, *Non-linear
+   !> Finite Element Analysis of Solids and Structures*, vol. 1, Wiley 1991, 9.3;
+   !> Matthies & Strang, IJNME 14 (1979)); the bracket is narrowed by the Illinois variant of
+   !> regula falsi, kept at least 5 % inside. This finds the kink of a node that the step
+   !> pushes across its friction cone or through its contact (the step halving it replaces
+   !> only reached 1/16 of the step and cycled there). Without a bracket (g(1) > 0, or
+   !> g(0) <= 0 with an unsymmetric tangent) the step is halved. The first trial whose
+   !> residual norm is not larger than before is accepted; after `max_trials` the trial with
+   !> the smallest residual norm is kept. The correction norm reported is that of the
+   !> accepted step.
    subroutine contact_line_search(model, context, state, time, previous_norm, correction_norm, &
                                   failure, error)
       type(model_t), intent(in) :: model
@@ -260,17 +292,28 @@ contains
       real(dp), intent(inout) :: correction_norm
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
-      integer, parameter :: max_backtracks = 4
-      real(dp) :: trial_norm, reference, fraction, best_norm, best_fraction
-      integer :: k
+      integer, parameter :: max_trials = 8
+      real(dp), parameter :: inset = 0.05_dp   !! minimum distance from the bracket's ends
+      real(dp) :: trial_norm, reference, fraction, next, best_norm, best_fraction
+      real(dp) :: low, high, g_low, g_high, g
+      logical :: bracketed
+      integer :: k, kept_end
+      low = 0.0_dp
+      g_low = dot_product(context%correction, context%residual)   ! g(0): the residual before the step
+      high = 1.0_dp
+      g_high = 0.0_dp
+      bracketed = .false.
+      kept_end = 0
       fraction = 1.0_dp
       best_norm = huge(1.0_dp)
       best_fraction = 1.0_dp
-      do k = 0, max_backtracks
+      do k = 1, max_trials
          call evaluate_equilibrium(model, context, state, time, .false., trial_norm, reference, failure, error)
          if (allocated(error)) return
          if (allocated(failure)) then
-            deallocate (failure)   ! an inverted element: try a shorter step
+            deallocate (failure)   ! an inverted element: a shorter step
+            high = fraction
+            bracketed = .false.
          else
             if (trial_norm <= previous_norm) then
                correction_norm = fraction*norm2(context%correction)
@@ -280,10 +323,33 @@ contains
                best_norm = trial_norm
                best_fraction = fraction
             end if
+            g = dot_product(context%correction, context%residual)
+            if (g < 0.0_dp .and. g_low > 0.0_dp) then
+               ! overshoot: the root lies in (low, fraction)
+               if (bracketed .and. kept_end == 2) g_low = 0.5_dp*g_low   ! Illinois: the low end stayed twice
+               high = fraction
+               g_high = g
+               bracketed = .true.
+               kept_end = 2
+            else if (bracketed .and. g > 0.0_dp) then
+               if (kept_end == 1) g_high = 0.5_dp*g_high                 ! the high end stayed twice
+               low = fraction
+               g_low = g
+               kept_end = 1
+            else
+               high = fraction
+               bracketed = .false.
+            end if
          end if
-         if (k == max_backtracks) exit
-         state%u = state%u - 0.5_dp*fraction*context%correction
-         fraction = 0.5_dp*fraction
+         if (k == max_trials) exit
+         if (bracketed) then
+            next = low + g_low*(high - low)/(g_low - g_high)
+            next = min(max(next, low + inset*(high - low)), high - inset*(high - low))
+         else
+            next = 0.5_dp*(low + high)
+         end if
+         state%u = state%u + (next - fraction)*context%correction
+         fraction = next
          context%n_backtracks = context%n_backtracks + 1
       end do
       ! no trial lowered the residual: keep the best one (u_old + best_fraction du)

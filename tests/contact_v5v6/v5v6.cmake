@@ -65,18 +65,24 @@ add_test(NAME v5_u3_1pass_coulomb
          COMMAND bash ${V5V6_DIR}/run_v5.sh ${FRIX_BIN} ${V5_INPUTS}/v5_u3_1pass_coulomb.dck 3
                  --check pass_sum=0.9999:1.0001 --check tangential=0.08:0.13 --check slipping=0:0
                  --check lower_err=0.366:0.447)
-# Two-pass with Coulomb friction does not converge: each interface point is tied by the stick
-# springs of both passes, whose anchors disagree where one pass slips; the slip statuses then
-# cycle (docs/verification/v5_v6.md, "Known limitation"). Disabled until two-pass friction is
-# reformulated; run it.
+# Two-pass with Coulomb friction: no node slips, and the tangential tractions (0 in the
+# continuum) are a penalty artifact like the pressure error: measured max |t| = 9.9e-4 p at
+# eps_N = 1e8 and 1.06e-5 p at eps_N = 1e10 (errors 5.9e-3 and 6.3e-5), i.e. they vanish
+# with 1/eps_N. Bounds: 2e-3 and 2e-5 (twice the measured values), 1e-2 and 1e-4 on the
+# pressure error as for the frictionless two-pass tests. (These did not converge before the
+# slip-reversal rule and the line search on du . r: the statuses cycled.)
 add_test(NAME v5_u3_2pass_coulomb
          COMMAND bash ${V5V6_DIR}/run_v5.sh ${FRIX_BIN} ${V5_INPUTS}/v5_u3_2pass_coulomb.dck 3
-                 --check ${V5_EQUILIBRIUM} --check tangential=0:1e-6 --check slipping=0:0
+                 --check ${V5_EQUILIBRIUM} --check tangential=0:2e-3 --check slipping=0:0
                  --check upper_err=0:1e-2 --check lower_err=0:1e-2)
-set_tests_properties(v5_u3_2pass_coulomb PROPERTIES DISABLED TRUE)
+add_test(NAME v5_u3_2pass_coulomb_eps1e10
+         COMMAND bash ${V5V6_DIR}/run_v5.sh ${FRIX_BIN} ${V5_INPUTS}/v5_u3_2pass_coulomb_eps1e10.dck 3
+                 --check ${V5_EQUILIBRIUM} --check tangential=0:2e-5 --check slipping=0:0
+                 --check upper_err=0:1e-4 --check lower_err=0:1e-4)
 set_tests_properties(v5_matching_1pass v5_u3_slave_upper_1pass v5_u3_slave_lower_1pass
                      v5_u5_slave_upper_1pass v5_u5_slave_lower_1pass v5_u3_2pass v5_u5_2pass
                      v5_u3_2pass_eps1e10 v5_u3_1pass_coulomb v5_u3_2pass_coulomb
+                     v5_u3_2pass_coulomb_eps1e10
                      PROPERTIES LABELS "regression;contact")
 
 # V6 Hertz, h = 0.008 (a/h = 12). Benchmark target (benchmarks.md V6): p0 and a within 5 %.

@@ -57,39 +57,43 @@ contains
       asymmetry = maxval(abs(tangent - transpose(tangent)))/maxval(abs(tangent))
    end function asymmetry
 
-   !> Tangent of node_face_contact against central differences of fint, all 15 unknowns;
-   !> fails if the status (or the outside/clamped flags) differs from `expected_status` at the
-   !> base point or at any perturbed point (the difference must not cross a branch).
+   !> Tangent of node_face_contact against central differences of fint, all 15 unknowns (27
+   !> with an anchor on another face, x_anchor_face); fails if the status (or the clamped flag)
+   !> differs from `expected_status` at the base point or at any perturbed point (the
+   !> difference must not cross a branch).
    subroutine check_face_tangent(error, parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                 expected_status, tangent)
+                                 expected_status, tangent, x_anchor_face)
       type(error_t), allocatable, intent(out) :: error
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3), x_master(3, 4), area, anchor_xi(2)
       logical, intent(in) :: has_anchor, clamp
       integer, intent(in) :: expected_status
-      real(dp), intent(out) :: tangent(15, 15)
+      real(dp), intent(out) :: tangent(:, :)   !! (15, 15), or (27, 27) with x_anchor_face
+      real(dp), intent(in), optional :: x_anchor_face(3, 4)
       type(contact_point_result_t) :: base, plus, minus
-      real(dp) :: q(15), qp(15), fint(15), f_plus(15), f_minus(15), k_plus(15, 15), column(15), h, scale, worst
-      integer :: j
+      real(dp), allocatable :: q(:), qp(:), fint(:), f_plus(:), f_minus(:), k_other(:, :), column(:)
+      real(dp) :: h, scale, worst
+      integer :: j, n
 
+      n = merge(27, 15, present(x_anchor_face))
+      allocate (q(n), fint(n), f_plus(n), f_minus(n), k_other(n, n), column(n))
       q(1:3) = x_slave
       q(4:15) = reshape(x_master, [12])
+      if (present(x_anchor_face)) q(16:27) = reshape(x_anchor_face, [12])
       h = relative_step*maxval(abs(x_master))
-      call node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, base, fint, tangent)
+      call evaluate(q, base, fint, tangent)
       if (base%status /= expected_status) then
          call fatal_error(error, 'status '//to_string(base%status)//', expected '//to_string(expected_status))
          return
       end if
       scale = maxval(abs(tangent))
       worst = 0.0_dp
-      do j = 1, 15
+      do j = 1, n
          qp = q
          qp(j) = q(j) + h
-         call node_face_contact(parameters, qp(1:3), reshape(qp(4:15), [3, 4]), area, anchor_xi, has_anchor, &
-                                clamp, plus, f_plus, k_plus)
+         call evaluate(qp, plus, f_plus, k_other)
          qp(j) = q(j) - h
-         call node_face_contact(parameters, qp(1:3), reshape(qp(4:15), [3, 4]), area, anchor_xi, has_anchor, &
-                                clamp, minus, f_minus, k_plus)
+         call evaluate(qp, minus, f_minus, k_other)
          if (plus%status /= expected_status .or. minus%status /= expected_status .or. &
              (plus%clamped .neqv. base%clamped) .or. (minus%clamped .neqv. base%clamped)) then
             call fatal_error(error, 'the difference of unknown '//to_string(j)//' crosses a branch')
@@ -106,6 +110,19 @@ contains
       if (.not. (worst <= tangent_tolerance*scale)) &
          call fatal_error(error, 'tangent vs central differences: max error '//to_string(worst)// &
                           ', max |K| '//to_string(scale))
+   contains
+      subroutine evaluate(unknowns, result, force, stiffness)
+         real(dp), intent(in) :: unknowns(:)
+         type(contact_point_result_t), intent(out) :: result
+         real(dp), intent(out) :: force(:), stiffness(:, :)
+         if (present(x_anchor_face)) then
+            call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
+                                   has_anchor, clamp, result, force, stiffness, reshape(unknowns(16:27), [3, 4]))
+         else
+            call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
+                                   has_anchor, clamp, result, force, stiffness)
+         end if
+      end subroutine evaluate
    end subroutine check_face_tangent
 
    !> Tangent of node_plane_contact against central differences (3 unknowns), same rules.

@@ -19,6 +19,10 @@ module test_contact_tangent
    public :: collect_contact_tangent
 
    real(dp), parameter :: area = 0.5_dp, depth = 0.01_dp, mu = 0.3_dp
+   !> The face sharing warped_face's edge xi1 = +1 (its nodes 2 and 3), continuing the surface
+   !> with a kink; counter-clockwise seen from +z like warped_face. On it that edge is xi1 = -1.
+   real(dp), parameter :: neighbour_face(3, 4) = reshape([2.1_dp, 0.2_dp, 0.3_dp, 4.0_dp, 0.1_dp, 0.2_dp, &
+                                                           3.9_dp, 1.8_dp, 0.0_dp, 1.8_dp, 1.7_dp, -0.2_dp], [3, 4])
    !> A rigid plane through (0.1, -0.2, 0.3) with a tilted normal (not a coordinate axis).
    real(dp), parameter :: plane_point(3) = [0.1_dp, -0.2_dp, 0.3_dp]
    real(dp), parameter :: plane_normal(3) = [0.2_dp, -0.3_dp, 1.0_dp]
@@ -37,6 +41,8 @@ contains
                new_unittest('warped face, beyond an edge, clamped, slip', test_clamped_edge), &
                new_unittest('warped face, beyond a corner, clamped, stick', test_clamped_corner_stick), &
                new_unittest('warped face, beyond a corner, clamped, slip', test_clamped_corner_slip), &
+               new_unittest('anchor on the neighbouring face, stick', test_other_face_stick), &
+               new_unittest('anchor on the neighbouring face, slip', test_other_face_slip), &
                new_unittest('rigid plane, stick (symmetric)', test_plane_stick), &
                new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip)]
    end subroutine collect_contact_tangent
@@ -121,6 +127,30 @@ contains
       call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.04_dp, 1.03_dp], depth), &
                               warped_face, area, [0.9_dp, 0.95_dp], .true., .true., contact_slip, tangent)
    end subroutine test_clamped_corner_slip
+
+   !> A node that slid from neighbour_face onto warped_face across their common edge: its
+   !> anchor is a material point of neighbour_face, whose 12 coordinates enter the tangent.
+   subroutine test_other_face_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(27, 27)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.99_dp, 0.4_dp], depth), &
+                              warped_face, area, [-0.995_dp, 0.4_dp], .true., .false., contact_stick, tangent, &
+                              x_anchor_face=neighbour_face)
+      if (allocated(error)) return
+      call check(error, maxval(abs(tangent(:, 16:27))) > 1.0e-2_dp*maxval(abs(tangent)), &
+                 'the anchor face nodes should enter the tangent')
+   end subroutine test_other_face_stick
+
+   subroutine test_other_face_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(27, 27)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.9_dp, 0.4_dp], depth), &
+                              warped_face, area, [-0.8_dp, 0.5_dp], .true., .false., contact_slip, tangent, &
+                              x_anchor_face=neighbour_face)
+      if (allocated(error)) return
+      call check(error, maxval(abs(tangent(:, 16:27))) > 1.0e-3_dp*maxval(abs(tangent)), &
+                 'the anchor face nodes should enter the tangent')
+   end subroutine test_other_face_slip
 
    subroutine test_plane_stick(error)
       type(error_t), allocatable, intent(out) :: error

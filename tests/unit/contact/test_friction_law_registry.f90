@@ -6,7 +6,7 @@ module test_friction_law_registry
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains
    use frix_dual_number, only: dual_t, dual_constant
-   use frix_friction_law, only: friction_law_t
+   use frix_friction_law, only: friction_law_t, branch_free
    use frix_coulomb_friction, only: coulomb_friction_t
    use frix_friction_law_registry, only: create_friction_law
    use frix_contact_parameters, only: contact_parameters_t, new_contact_parameters
@@ -30,18 +30,20 @@ contains
       class(friction_law_t), allocatable :: law
       type(error_t), allocatable :: failure
       type(dual_t) :: traction(3)
-      logical :: slipping
+      logical :: slipping, law_slipping
       call create_friction_law('coulomb', ['mu'], [0.3_dp], law, failure)
       call check(error, .not. allocated(failure) .and. allocated(law), 'created')
       if (allocated(error)) return
       call check(error, .not. law%frictionless() .and. law%name == 'COULOMB', 'a frictional law named COULOMB')
       if (allocated(error)) return
-      call law%return_map(dual_constant([40.0_dp, 30.0_dp, 0.0_dp]), dual_constant(100.0_dp), traction, slipping)
+      call law%return_map(dual_constant([40.0_dp, 30.0_dp, 0.0_dp]), dual_constant(100.0_dp), branch_free, traction, &
+                          slipping, law_slipping)
       call check(error, slipping .and. maxval(abs(traction%value - [24.0_dp, 18.0_dp, 0.0_dp])) <= 1.0e-13_dp, &
                  'slip to mu p_N along t_trial')
       if (allocated(error)) return
       call create_friction_law('COULOMB', ['MU'], [0.6_dp], law, failure)
-      call law%return_map(dual_constant([40.0_dp, 30.0_dp, 0.0_dp]), dual_constant(100.0_dp), traction, slipping)
+      call law%return_map(dual_constant([40.0_dp, 30.0_dp, 0.0_dp]), dual_constant(100.0_dp), branch_free, traction, &
+                          slipping, law_slipping)
       call check(error, .not. slipping .and. all(traction%value == [40.0_dp, 30.0_dp, 0.0_dp]), 'stick')
       if (allocated(error)) return
       select type (law)
@@ -57,13 +59,14 @@ contains
       class(friction_law_t), allocatable :: law
       type(error_t), allocatable :: failure
       type(dual_t) :: traction(3)
-      logical :: slipping
+      logical :: slipping, law_slipping
       character(len=2) :: no_names(0)
       real(dp) :: no_values(0)
       call create_friction_law('Frictionless', no_names, no_values, law, failure)
       call check(error, .not. allocated(failure) .and. law%frictionless(), 'frictionless')
       if (allocated(error)) return
-      call law%return_map(dual_constant([0.0_dp, 0.0_dp, 0.0_dp]), dual_constant(100.0_dp), traction, slipping)
+      call law%return_map(dual_constant([0.0_dp, 0.0_dp, 0.0_dp]), dual_constant(100.0_dp), branch_free, traction, &
+                          slipping, law_slipping)
       call check(error, all(traction%value == 0.0_dp), 'zero traction even for a zero trial')
       if (allocated(error)) return
       call create_friction_law('COULOMB', ['MU'], [0.0_dp], law, failure)
