@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Reproducer of a frix defect found by P2 (docs/performance-p2.md, "Problem found"): the
-# tangential (stick) history of slave nodes that touch at t = 0 starts only after the first
-# converged increment, so the friction of the first increment is lost.
+# Regression test for a frix defect found by P2 (docs/performance-p2.md; fixed 2026-11-23):
+# the tangential (stick) history of slave nodes that touch at t = 0 started only after the
+# first converged increment, so the friction of the first increment was lost.
 # Deck: first_increment_friction.dck.in (block on the rigid plane, top held in x and y,
 # pressure on top, MU 0.9 so every node sticks). In pure stick the problem is linear once the
 # contact is closed, so the corner node's traction at t = 1 must not depend on NUMSTEP.

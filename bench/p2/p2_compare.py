@@ -74,7 +74,8 @@ def read_frix(work, n):
             if not re.match(r'^-?\d+$', tokens[0]):
                 continue        # column header
             if block == 'ITERATION LOG':
-                current['log'].append((int(tokens[0]), float(tokens[1]), float(tokens[2])))
+                current['log'].append((int(tokens[0]), float(tokens[1]), float(tokens[2]),
+                                       float(tokens[3])))
             elif block and block.startswith('REACTIONS'):
                 current['reactions'][int(tokens[0])] = [float(t) for t in tokens[1:4]]
     # contact csv
@@ -160,15 +161,30 @@ def pressure_stats(frix_p, ccx_p, ids):
             'closed_f': int(np.sum(pf > 0)), 'closed_c': int(np.sum(pc > 0))}
 
 
-def quadratic_rates(log, floor=1e-11):
-    """Estimated convergence orders q_k = log(r_{k+1}/r_k)/log(r_k/r_{k-1}) (relative
-    norms), over the rows above the round-off floor."""
-    r = [row[2] for row in log if row[2] > floor]
+def orders(r):
+    """Estimated convergence orders q_k = log(r_{k+1}/r_k)/log(r_k/r_{k-1}) of a decreasing
+    error sequence r (pairs where r does not decrease are skipped)."""
     rates = []
     for k in range(1, len(r) - 1):
         if r[k] < r[k - 1] and r[k + 1] < r[k]:
             rates.append(math.log(r[k + 1] / r[k]) / math.log(r[k] / r[k - 1]))
     return rates
+
+
+def quadratic_rates(log, floor=1e-11):
+    """Orders of the relative residual norms, over the rows above the round-off floor."""
+    return orders([row[2] for row in log if row[2] > floor])
+
+
+def energy_rates(log, floor=1e-20):
+    """Orders of the energy-norm error: sqrt(energy) of iteration k + 1 is |du . r|^(1/2) of the
+    full Newton correction made from iterate k, i.e. the K^-1 norm of r_k (the error of
+    iterate k in the energy norm when K is the exact tangent); rows whose energy has fallen
+    below floor x the first one are round-off and dropped."""
+    e = [row[3] for row in log[1:]]
+    if not e or e[0] <= 0.0:
+        return []
+    return orders([math.sqrt(x) for x in e if x > floor * e[0]])
 
 
 def plot_pressure(frix, ccx, ids, times, path):
@@ -316,14 +332,39 @@ def main():
             add('| | | CalculiX | %.5f | %.5f | %.4f | %.4f | %.4f | %.4f | %d/%d | %d |' % (
                 crz, -crx, st['mean_c'], st['max_c'], st['centre_c'], st['tmax_c'],
                 st['closed_c'], st['n_slave'], st['slip_c']))
-            diffs.append((n, t, st['dmax'], st['dtmax'], (rx - crx) / crx if crx else 0.0))
+            # relative difference of the friction force only where there is one (at t = 1
+            # both RX are round-off around 0: their ratio means nothing)
+            limit = 1e-6 * ids['mu'] * ids['pressure'] * ids['slave_area']
+            diffs.append((n, t, st['dmax'], st['dtmax'],
+                          (rx - crx) / crx if abs(crx) > limit else float('nan'), rx - crx))
     add('')
     add('Largest nodal difference frix - CalculiX over the slave nodes (MPa; q = %g) and '
         'relative difference of the friction force:\n' % summary[0][1]['pressure'])
-    add('| n | t | max abs dp | max abs d(shear) | d(RX)/RX |')
-    add('|---|---|---|---|---|')
-    for n, t, dp, dt, drx in diffs:
-        add('| %d | %g | %.4f | %.4f | %+.2e |' % (n, t, dp, dt, drx))
+    add('| n | t | max abs dp | max abs d(shear) | d(RX) (N) | d(RX)/RX |')
+    add('|---|---|---|---|---|---|')
+    for n, t, dp, dt, drx, arx in diffs:
+        add('| %d | %g | %.4f | %.4f | %+.1e | %s |' % (
+            n, t, dp, dt, arx, '-' if math.isnan(drx) else '%+.2e' % drx))
+    add('')
+    add('Friction force -RX of the upper top (N) at every increment of step 2, frix / CalculiX '
+        '(relative difference):\n')
+    times = [inc['time'] for inc in summary[0][2]['increments'] if inc['step'] == 2]
+    add('| n | ' + ' | '.join('t = %g' % t for t in times) + ' |')
+    add('|---|' + '---|' * len(times))
+    for n, ids, frix, ccx, problem in summary:
+        if frix is None or not ccx:
+            continue
+        cells = []
+        for t in times:
+            inc = [x for x in frix['increments'] if abs(x['time'] - t) < 1e-9]
+            key = ('UPPER_TOP', round(t, 6))
+            if not inc or key not in ccx['totals']:
+                cells.append('-')
+                continue
+            rx = frix_sum(inc[0], ids['upper_top'], 0)
+            crx = ccx['totals'][key][0]
+            cells.append('%.5f / %.5f (%+.1e)' % (-rx, -crx, (rx - crx) / crx))
+        add('| %d | %s |' % (n, ' | '.join(cells)))
     add('')
 
     add('## Newton convergence (frix ITERATION LOG, relative residual norms)\n')
@@ -331,13 +372,16 @@ def main():
         if frix is None:
             continue
         add('### n = %d\n' % n)
-        add('| incr | relative residual norms, ITER 0, 1, ... | estimated orders |')
-        add('|---|---|---|')
+        add('| incr | relative residual norms, ITER 0, 1, ... | orders (residual) | '
+            'energy norms sqrt(abs(du . r)), ITER 1, 2, ... | orders (energy) |')
+        add('|---|---|---|---|---|')
         for inc in frix['increments']:
-            add('| %d.%d | %s | %s |' % (
+            add('| %d.%d | %s | %s | %s | %s |' % (
                 inc['step'], inc['increment'],
                 ' '.join('%.1e' % row[2] for row in inc['log']),
-                ' '.join('%.2f' % q for q in quadratic_rates(inc['log']))))
+                ' '.join('%.2f' % q for q in quadratic_rates(inc['log'])),
+                ' '.join('%.1e' % math.sqrt(row[3]) for row in inc['log'][1:]),
+                ' '.join('%.2f' % q for q in energy_rates(inc['log']))))
         add('')
         if ccx:
             add('CalculiX (.cvg: largest residual force in % of the mean force, per '

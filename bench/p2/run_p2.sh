@@ -44,7 +44,8 @@ machine="${results_dir}/p2_${date_tag}_machine.txt"
 {
    echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
    echo "host_cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
-   echo "nproc: $(nproc) (shared with other jobs)"
+   # nproc honours OMP_NUM_THREADS (exported above): count the processors without it
+   echo "nproc: $(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc) (shared with other jobs)"
    echo "memory: $(free -m | awk '/^Mem:/ {print $2 " MiB"}')"
    echo "kernel: $(uname -r)"
    echo "frix: ${frix} ($(gfortran --version | head -1))"
@@ -57,11 +58,13 @@ for n in "${sizes[@]}"; do
    /usr/bin/python3 "${script_dir}/p2_generate.py" "${n}" "${work_dir}"
    rm -rf "${work_dir}/frix_n${n}"
    echo "run_p2.sh: n = ${n}: frix" >&2
+   echo "load_before_frix_n${n}: $(cut -d' ' -f1-3 /proc/loadavg)" >> "${machine}"
    ( cd "${work_dir}" && /usr/bin/time -f "wall %e s rss %M kB user %U s sys %S s" -a -o "frix_n${n}.time" \
         "${frix}" "p2_n${n}.dck" --out "frix_n${n}" > "frix_n${n}.log" 2>&1 ) || \
       echo "run_p2.sh: frix failed for n = ${n} (see ${work_dir}/frix_n${n}.log)" >&2
    cat "${work_dir}/frix_n${n}.time" >> "${work_dir}/frix_n${n}.log"; rm -f "${work_dir}/frix_n${n}.time"
    echo "run_p2.sh: n = ${n}: CalculiX" >&2
+   echo "load_before_ccx_n${n}: $(cut -d' ' -f1-3 /proc/loadavg)" >> "${machine}"
    ( cd "${work_dir}" && rm -f "p2_n${n}.dat" "p2_n${n}.sta" "p2_n${n}.cvg" && \
         /usr/bin/time -f "wall %e s rss %M kB user %U s sys %S s" -a -o "ccx_n${n}.time" \
         "${ccx}" -i "p2_n${n}" > "ccx_n${n}.log" 2>&1 ) || \
