@@ -5,12 +5,13 @@
 program frix
    use frix_error, only: error_t
    use frix_driver, only: run_options_t, run_deck
-   use frix_process, only: exit_with_status
+   use frix_process, only: exit_with_status, keep_freed_memory
    implicit none
    type(run_options_t) :: options
    type(error_t), allocatable :: error
    integer :: status
 
+   call keep_freed_memory()
    call parse_command_line(options, status)
    if (status /= 0) then
       call print_usage()
