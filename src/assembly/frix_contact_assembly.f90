@@ -53,7 +53,7 @@ module frix_contact_assembly
       ! the current iterate
       integer, allocatable :: face(:)          !! master face of each slave node, 0: none
       !> friction branch imposed on each slave node in this increment (branch_free: the law
-      !> decides; branch_stick after a slip reversal, see assemble_contact)
+      !> decides; branch_stick after a slip reversal, see slip_reversed)
       integer, allocatable :: branch(:)
       logical, allocatable :: released(:)          !! imposed once and released: not again
       logical, allocatable :: slipped(:)           !! slipping at the last iterate
@@ -228,8 +228,11 @@ contains
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) cycle
                call kernel_nodes(pass, i, nodes, n_nodes)
-               do a = 1, n_nodes - 1
-                  do b = a + 1, n_nodes
+               ! the pairs that can be missing: the slave with every face node, and the
+               ! contact face's nodes with the anchor face's (those within a face share an
+               ! element)
+               do a = 1, merge(5, 1, n_nodes == 9)
+                  do b = max(a + 1, merge(2, 6, a == 1)), n_nodes
                      if (matrix%neighbour_index(nodes(a), nodes(b)) == 0) then
                         call add_extra_pair(system, nodes(a), nodes(b))
                         missing = .true.
@@ -320,7 +323,7 @@ contains
          do i = 1, size(pass%slave_nodes)
             x_slave = model%mesh%coords(:, pass%slave_nodes(i)) + &
                       u(3*pass%slave_nodes(i) - 2:3*pass%slave_nodes(i))
-            best = huge(1.0_dp)
+            best = 0.5_dp*huge(1.0_dp)   ! best*(1 + tie_tolerance) must not overflow
             best_face = 0
             cell = cell_of(x_slave)
             if (all(x_slave >= origin) .and. all(x_slave <= origin + n_cells*cell_size)) then
@@ -414,7 +417,8 @@ contains
                      call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
                                              pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
                                              pass%result(i), force3, tangent3, branch=pass%branch(i))
-                     if (.not. (present(matrix) .and. slip_reversed(pass, i))) exit
+                     if (.not. present(matrix)) exit
+                     if (.not. slip_reversed(pass, i)) exit
                   end do
                   if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                       pass%result(i)%gap <= pair%parameters%gap_tolerance) then
@@ -448,7 +452,8 @@ contains
                                             pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
                                             branch=pass%branch(i))
                   end if
-                  if (.not. (present(matrix) .and. slip_reversed(pass, i))) exit
+                  if (.not. present(matrix)) exit
+                  if (.not. slip_reversed(pass, i)) exit
                end do
                if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                    pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= pair%parameters%gap_tolerance) then
@@ -529,7 +534,6 @@ contains
    subroutine commit_contact(system)
       type(contact_system_t), intent(inout) :: system
       integer :: p, i
-      call reset_friction_branches(system)
       do p = 1, size(system%passes)
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)

@@ -75,8 +75,9 @@ contains
    !> The anchor is the committed slip history of the node: face coordinates (may lie slightly
    !> outside [-1, 1]^2) on this face, or on the face x_anchor_face when the node has moved
    !> off the face of its anchor; the anchor face's nodes are then unknowns 16-27 of the
-   !> tangent (their force entries are zero), and a stick state commits the anchor's closest
-   !> point on this face. With has_anchor = .false. the anchor is the foot
+   !> tangent (their force entries are zero), and a stick state commits the anchor's
+   !> projection onto this face (the closest point of the bounded face if the projection
+   !> fails). With has_anchor = .false. the anchor is the foot
    !> x_s - g n of the CURRENT position, moving with it: g_T = 0 identically, so the node
    !> sticks with zero traction and no tangential stiffness (a consistent fallback; callers
    !> should pass the committed anchor instead). For an open node the returned new anchor is the
@@ -97,9 +98,9 @@ contains
       logical, intent(in) :: has_anchor       !! .false.: no committed anchor
       logical, intent(in) :: clamp            !! use the closest point of the bounded face
       type(contact_point_result_t), intent(out) :: result
-      !> internal force contribution (force): 15 entries, 27 with x_anchor_face
+      !> internal force contribution (force): exactly 15 entries, 27 with x_anchor_face
       real(dp), intent(out) :: fint(:)
-      !> d fint / d u (force/length): 15 x 15, 27 x 27 with x_anchor_face
+      !> d fint / d u (force/length): exactly 15 x 15, 27 x 27 with x_anchor_face
       real(dp), intent(out) :: tangent(:, :)
       !> current nodes of the face that carries the anchor, when it is not x_master's face
       real(dp), intent(in), optional :: x_anchor_face(3, 4)
@@ -109,7 +110,7 @@ contains
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), trial(3), traction(3), force(3), fd(15)
       real(dp) :: xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
-      logical :: converged, fixed(2), slipping, law_slipping, other_face
+      logical :: converged, fixed(2), anchor_fixed(2), slipping, law_slipping, other_face
       integer :: a, k, n_unknowns, used_branch
 
       other_face = present(x_anchor_face)
@@ -186,7 +187,7 @@ contains
          if (other_face) then
             ! what a stick state commits: the anchor carried over onto the contact face
             call project_onto_face(x_master, old_anchor, used_anchor_xi, converged, initial_xi=result%xi)
-            if (.not. converged) call closest_point_in_face(x_master, old_anchor, 0.0_dp, used_anchor_xi, fixed)
+            if (.not. converged) call closest_point_in_face(x_master, old_anchor, 0.0_dp, used_anchor_xi, anchor_fixed)
          end if
       end if
       if (parameters%friction%frictionless()) then

@@ -16,8 +16,8 @@ module frix_friction_law
    public :: branch_free, branch_stick, branch_slip
 
    !> Which branch return_map evaluates: the law's own choice, or one imposed by the caller
-   !> (the Newton iterations freeze the stick/slip statuses when they cycle, see
-   !> docs/solver.md).
+   !> (the Newton iterations hold a node whose slip reverses in the stick branch, see
+   !> docs/contact.md, "Slip reversal"; branch_slip completes the set and is unit-tested).
    integer, parameter :: branch_free = 0
    integer, parameter :: branch_stick = 1
    integer, parameter :: branch_slip = 2

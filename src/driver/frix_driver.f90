@@ -107,7 +107,7 @@ contains
       write (*, '(a,t40,i12)') 'frix: stat factor_nonzeros', context%solver%factor_entries
       write (*, '(a,t40,i12)') 'frix: stat newton_iterations', context%n_iterations
       write (*, '(a,t40,i12)') 'frix: stat assemblies', context%n_assemblies
-      if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat line_search_halvings', context%n_backtracks
+      if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat line_search_trials', context%n_line_search_trials
       if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat stick_releases', context%n_releases
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds

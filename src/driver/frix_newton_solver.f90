@@ -46,7 +46,7 @@ module frix_newton_solver
       real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
-      integer :: n_backtracks = 0              !! step halvings of the contact line search
+      integer :: n_line_search_trials = 0      !! shortened steps tried by the contact line search
       integer :: n_releases = 0                !! converged iterates where held nodes were released
    end type newton_context_t
 
@@ -277,9 +277,9 @@ contains
    !> Finite Element Analysis of Solids and Structures*, vol. 1, Wiley 1991, 9.3;
    !> Matthies & Strang, IJNME 14 (1979)); the bracket is narrowed by the Illinois variant of
    !> regula falsi, kept at least 5 % inside. This finds the kink of a node that the step
-   !> pushes across its friction cone or through its contact (the step halving it replaces
-   !> only reached 1/16 of the step and cycled there). Without a bracket (g(1) > 0, or
-   !> g(0) <= 0 with an unsymmetric tangent) the step is halved. The first trial whose
+   !> pushes across its friction cone or through its contact. Without a bracket (g(1) > 0,
+   !> or g(0) <= 0 with an unsymmetric tangent) the step is halved; after a step where an
+   !> element cannot be evaluated, the search stays below that step. The first trial whose
    !> residual norm is not larger than before is accepted; after `max_trials` the trial with
    !> the smallest residual norm is kept. The correction norm reported is that of the
    !> accepted step.
@@ -296,14 +296,15 @@ contains
       real(dp), parameter :: inset = 0.05_dp   !! minimum distance from the bracket's ends
       real(dp) :: trial_norm, reference, fraction, next, best_norm, best_fraction
       real(dp) :: low, high, g_low, g_high, g
-      logical :: bracketed
-      integer :: k, kept_end
+      logical :: bracketed, failed_high
+      integer :: k, replaced_end
       low = 0.0_dp
       g_low = dot_product(context%correction, context%residual)   ! g(0): the residual before the step
       high = 1.0_dp
       g_high = 0.0_dp
-      bracketed = .false.
-      kept_end = 0
+      bracketed = .false.      ! g(low) > 0 >= g(high)
+      failed_high = .false.    ! high is a step where an element could not be evaluated
+      replaced_end = 0         ! 1: low, 2: high replaced by the last update (Illinois)
       fraction = 1.0_dp
       best_norm = huge(1.0_dp)
       best_fraction = 1.0_dp
@@ -314,6 +315,7 @@ contains
             deallocate (failure)   ! an inverted element: a shorter step
             high = fraction
             bracketed = .false.
+            failed_high = .true.
          else
             if (trial_norm <= previous_norm) then
                correction_norm = fraction*norm2(context%correction)
@@ -324,21 +326,27 @@ contains
                best_fraction = fraction
             end if
             g = dot_product(context%correction, context%residual)
-            if (g < 0.0_dp .and. g_low > 0.0_dp) then
-               ! overshoot: the root lies in (low, fraction)
-               if (bracketed .and. kept_end == 2) g_low = 0.5_dp*g_low   ! Illinois: the low end stayed twice
+            if (g_low > 0.0_dp .and. g <= 0.0_dp) then
+               ! overshoot (or a root): the root lies in (low, fraction]
+               if (bracketed) then
+                  if (replaced_end == 2) g_low = 0.5_dp*g_low   ! Illinois: low kept twice in a row
+                  replaced_end = 2
+               else
+                  replaced_end = 0
+               end if
                high = fraction
                g_high = g
                bracketed = .true.
-               kept_end = 2
-            else if (bracketed .and. g > 0.0_dp) then
-               if (kept_end == 1) g_high = 0.5_dp*g_high                 ! the high end stayed twice
+            else if (g_low > 0.0_dp .and. (bracketed .or. failed_high)) then
+               ! g > 0: the root lies beyond this trial, below high
+               if (bracketed) then
+                  if (replaced_end == 1) g_high = 0.5_dp*g_high   ! high kept twice in a row
+                  replaced_end = 1
+               end if
                low = fraction
                g_low = g
-               kept_end = 1
             else
-               high = fraction
-               bracketed = .false.
+               high = fraction   ! no bracket (g(1) > 0, or g(0) <= 0): halve towards 0
             end if
          end if
          if (k == max_trials) exit
@@ -350,7 +358,7 @@ contains
          end if
          state%u = state%u + (next - fraction)*context%correction
          fraction = next
-         context%n_backtracks = context%n_backtracks + 1
+         context%n_line_search_trials = context%n_line_search_trials + 1
       end do
       ! no trial lowered the residual: keep the best one (u_old + best_fraction du)
       state%u = state%u + (best_fraction - fraction)*context%correction

@@ -6,7 +6,7 @@ module test_friction_law_registry
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains
    use frix_dual_number, only: dual_t, dual_constant
-   use frix_friction_law, only: friction_law_t, branch_free
+   use frix_friction_law, only: friction_law_t, branch_free, branch_stick, branch_slip
    use frix_coulomb_friction, only: coulomb_friction_t
    use frix_friction_law_registry, only: create_friction_law
    use frix_contact_parameters, only: contact_parameters_t, new_contact_parameters
@@ -45,6 +45,18 @@ contains
       call law%return_map(dual_constant([40.0_dp, 30.0_dp, 0.0_dp]), dual_constant(100.0_dp), branch_free, traction, &
                           slipping, law_slipping)
       call check(error, .not. slipping .and. all(traction%value == [40.0_dp, 30.0_dp, 0.0_dp]), 'stick')
+      if (allocated(error)) return
+      ! imposed branches (mu = 0.6, p_N = 100, |t_trial| = 50): the law chooses stick
+      call law%return_map(dual_constant([40.0_dp, 30.0_dp, 0.0_dp]), dual_constant(100.0_dp), branch_slip, traction, &
+                          slipping, law_slipping)
+      call check(error, slipping .and. .not. law_slipping .and. &
+                 maxval(abs(traction%value - [48.0_dp, 36.0_dp, 0.0_dp])) <= 1.0e-13_dp, &
+                 'imposed slip: t = mu p_N t_trial/|t_trial| = (48, 36, 0), the law says stick')
+      if (allocated(error)) return
+      call law%return_map(dual_constant([80.0_dp, 60.0_dp, 0.0_dp]), dual_constant(100.0_dp), branch_stick, traction, &
+                          slipping, law_slipping)
+      call check(error, .not. slipping .and. law_slipping .and. all(traction%value == [80.0_dp, 60.0_dp, 0.0_dp]), &
+                 'imposed stick outside the cone (|t_trial| = 100 > 60): t = t_trial, the law says slip')
       if (allocated(error)) return
       select type (law)
       type is (coulomb_friction_t)
