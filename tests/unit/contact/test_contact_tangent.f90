@@ -9,8 +9,9 @@ module test_contact_tangent
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check
    use frix_strings, only: to_string
-   use frix_contact_kernel, only: contact_open, contact_stick, contact_slip
-   use frix_face_projection, only: face_position, face_normal
+   use frix_contact_kernel, only: contact_open, contact_stick, contact_slip, contact_point_result_t, &
+                                  node_face_contact
+   use frix_face_projection, only: face_position, face_normal, face_shape_functions
    use test_contact_fixtures, only: warped_face, make_parameters, check_face_tangent, check_plane_tangent, &
                                     asymmetry, slave_below
    implicit none
@@ -43,6 +44,8 @@ contains
                new_unittest('warped face, beyond a corner, clamped, slip', test_clamped_corner_slip), &
                new_unittest('anchor on the neighbouring face, stick', test_other_face_stick), &
                new_unittest('anchor on the neighbouring face, slip', test_other_face_slip), &
+               new_unittest('anchor on the neighbouring face: stick commits its projection', &
+                            test_other_face_commit), &
                new_unittest('rigid plane, stick (symmetric)', test_plane_stick), &
                new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip)]
    end subroutine collect_contact_tangent
@@ -151,6 +154,36 @@ contains
       call check(error, maxval(abs(tangent(:, 16:27))) > 1.0e-3_dp*maxval(abs(tangent)), &
                  'the anchor face nodes should enter the tangent')
    end subroutine test_other_face_slip
+
+   !> In stick with the anchor on neighbour_face, the anchor to commit is the projection of
+   !> x_A onto warped_face: x(new_anchor_xi) - x_A is normal to warped_face there (closest
+   !> point), and no slip is counted.
+   subroutine test_other_face_commit(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_point_result_t) :: result
+      real(dp) :: fint(27), tangent(27, 27), x_anchor(3), offset(3), shape(4), d_xi(4), d_eta(4)
+      real(dp) :: a1(3), a2(3)
+      integer :: k
+      call node_face_contact(make_parameters(mu), slave_below(warped_face, [0.99_dp, 0.4_dp], depth), &
+                             warped_face, area, [-0.995_dp, 0.4_dp], .true., .false., result, fint, tangent, &
+                             x_anchor_face=neighbour_face)
+      call check(error, result%status == contact_stick, 'stick')
+      if (allocated(error)) return
+      x_anchor = face_position(neighbour_face, [-0.995_dp, 0.4_dp])
+      offset = x_anchor - face_position(warped_face, result%new_anchor_xi)
+      call face_shape_functions(result%new_anchor_xi, shape, d_xi, d_eta)
+      do k = 1, 3
+         a1(k) = dot_product(d_xi, warped_face(k, :))
+         a2(k) = dot_product(d_eta, warped_face(k, :))
+      end do
+      call check(error, abs(dot_product(offset, a1)) <= 1.0e-12_dp*norm2(a1) .and. &
+                 abs(dot_product(offset, a2)) <= 1.0e-12_dp*norm2(a2), &
+                 'committed anchor = closest point of x_A on the contact face, tangential offset '// &
+                 to_string(max(abs(dot_product(offset, a1)), abs(dot_product(offset, a2)))))
+      if (allocated(error)) return
+      call check(error, result%slip_increment == 0.0_dp .and. all(fint(16:27) == 0.0_dp), &
+                 'no slip counted in stick, no force on the anchor face')
+   end subroutine test_other_face_commit
 
    subroutine test_plane_stick(error)
       type(error_t), allocatable, intent(out) :: error
