@@ -6,8 +6,8 @@
  * in benchmark P2 (n = 16, 30 factorizations) 677 000 minor page faults and 17 s of system
  * time against 25 s of user time. With mmap off (M_MMAP_MAX 0) and no trimming of the heap's
  * top (M_TRIM_THRESHOLD at its maximum), freed blocks stay in the process and are reused:
- * 41 000 page faults, 5.6 s system time, wall time halved; the peak memory can grow (by a
- * third there: blocks of different sizes fragment the heap). docs/performance.md. */
+ * 41 000 page faults, 0.3 s system time, CPU time halved; the peak memory can grow (5 to
+ * 39 % there: blocks of different sizes fragment the heap). docs/performance.md. */
 #include <limits.h>
 #ifdef __GLIBC__
 #include <malloc.h>
