@@ -108,9 +108,9 @@ contains
       !> branch_stick, branch_slip)
       integer, intent(in), optional :: branch
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
-      type(dual_t) :: pressure, anchor_point(3), relative(3), trial(3), traction(3), force(3), fd(15)
+      type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
       real(dp) :: xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
-      logical :: converged, fixed(2), anchor_fixed(2), slipping, law_slipping, other_face
+      logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face
       integer :: a, k, n_unknowns, used_branch
 
       other_face = present(x_anchor_face)
@@ -198,9 +198,8 @@ contains
       else
          if (.not. has_anchor) anchor_point = xs - gap*normal   ! the foot: g_T = 0 identically
          relative = xs - anchor_point
-         trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, normal)*normal)
-         call parameters%friction%return_map(trial, pressure, used_branch, traction, slipping, law_slipping)
-         result%law_status = merge(contact_slip, contact_stick, law_slipping)
+         call friction_response(parameters, relative, normal, pressure, used_branch, traction, slipping, &
+                                result%law_status)
          if (slipping) then
             result%status = contact_slip
             target = x_slave - result%gap*result%normal + traction%value/parameters%tangential_penalty
@@ -248,9 +247,9 @@ contains
       real(dp), intent(out) :: fint(3)         !! internal force contribution (force)
       real(dp), intent(out) :: tangent(3, 3)   !! d fint / d u_s (force/length)
       integer, intent(in), optional :: branch  !! friction branch, as for node_face_contact
-      type(dual_t) :: xs(3), gap, pressure, relative(3), trial(3), traction(3), force(3)
+      type(dual_t) :: xs(3), gap, pressure, relative(3), traction(3), force(3)
       real(dp) :: normal(3), foot(3), used_anchor(3)
-      logical :: slipping, law_slipping
+      logical :: slipping
       integer :: k, used_branch
 
       fint = 0.0_dp
@@ -282,9 +281,8 @@ contains
          else
             relative = gap*normal   ! anchor at the foot: g_T = 0 identically
          end if
-         trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, dual_constant(normal))*normal)
-         call parameters%friction%return_map(trial, pressure, used_branch, traction, slipping, law_slipping)
-         result%law_status = merge(contact_slip, contact_stick, law_slipping)
+         call friction_response(parameters, relative, dual_constant(normal), pressure, used_branch, traction, &
+                                slipping, result%law_status)
          if (slipping) then
             result%status = contact_slip
             result%new_anchor = foot + traction%value/parameters%tangential_penalty
@@ -303,6 +301,24 @@ contains
          tangent(k, :) = -force(k)%gradient(1:3)
       end do
    end subroutine node_plane_contact
+
+   !> Trial traction t_trial = -eps_T (I - n n) g_rel (g_rel: slave position relative to the
+   !> anchor; force/area) and its return mapping on friction branch `branch`: the traction,
+   !> whether the slip branch was evaluated, and the status the law itself chooses.
+   pure subroutine friction_response(parameters, relative, normal, pressure, branch, traction, slipping, &
+                                     law_status)
+      type(contact_parameters_t), intent(in) :: parameters
+      type(dual_t), intent(in) :: relative(3), normal(3), pressure
+      integer, intent(in) :: branch
+      type(dual_t), intent(out) :: traction(3)
+      logical, intent(out) :: slipping
+      integer, intent(out) :: law_status
+      type(dual_t) :: trial(3)
+      logical :: law_slipping
+      trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, normal)*normal)
+      call parameters%friction%return_map(trial, pressure, branch, traction, slipping, law_slipping)
+      law_status = merge(contact_slip, contact_stick, law_slipping)
+   end subroutine friction_response
 
    !> Shape functions, position and tangent vectors x_,1, x_,2 of the face at dual xi.
    pure subroutine face_geometry(xm, xi, shape, x, a1, a2)

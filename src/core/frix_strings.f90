@@ -5,6 +5,7 @@ module frix_strings
    private
 
    public :: to_string, to_upper, to_lower
+   public :: zero_padded
 
    !> Text of an integer or a real, without padding.
    interface to_string
@@ -37,6 +38,16 @@ contains
       write (buffer, '(g0.6)') value
       text = trim(adjustl(buffer))
    end function real_to_string
+
+   !> `value` written with at least `digits` digits, zero-padded (names that sort in order).
+   pure function zero_padded(value, digits) result(text)
+      integer, intent(in) :: value, digits
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer, edit
+      write (edit, '("(i0.",i0,")")') digits
+      write (buffer, edit) value
+      text = trim(buffer)
+   end function zero_padded
 
    pure function to_upper(text) result(upper)
       character(len=*), intent(in) :: text

@@ -23,7 +23,7 @@
 module frix_hdf5_results
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, zero_padded
    use frix_mesh, only: mesh_t
    use frix_hdf5_support, only: hid_t, hdf5_location_t, hdf5_initialize, create_group, open_group, close_group, &
                                 close_group_after, &
@@ -38,6 +38,7 @@ module frix_hdf5_results
    public :: hdf5_layout_version
 
    integer, parameter :: hdf5_layout_version = 1   !! root attribute `layout_version`; bump on incompatible change
+   integer, parameter :: increment_digits = 6       !! increment group names: 000001, 000002, ...
 
    !> A caller-given array written into the `contact` group of the next increment.
    type :: named_array_t
@@ -282,7 +283,7 @@ contains
 
       call open_group(self%file, 'increments', increments, error)
       if (allocated(error)) return
-      call create_group(increments, group_name(self%n_increments + 1), group, error)
+      call create_group(increments, zero_padded(self%n_increments + 1, increment_digits), group, error)
       if (.not. allocated(error)) then
          call write_increment_group(self, group, step, increment, time, displacement, reaction, stress, strain, &
                                     alpha, history, error)
@@ -387,15 +388,6 @@ contains
       if (status /= 0) call fatal_error(error, 'HDF5: cannot flush results file "'//file%file_path//'"')
    end subroutine flush_file
 
-   !> Name of the k-th increment group: k zero-padded to 6 digits (more if needed).
-   pure function group_name(k) result(name)
-      integer, intent(in) :: k
-      character(len=:), allocatable :: name
-      character(len=16) :: buffer
-      write (buffer, '(i0.6)') k
-      name = trim(buffer)
-   end function group_name
-
    !> Open an existing results file read-only, with distinct messages for a missing file and
    !> a file that is not HDF5.
    subroutine open_for_reading(path, file, error)
@@ -467,9 +459,9 @@ contains
       k = 0
       do
          k = k + 1
-         call link_exists(increments_group, group_name(k), exists, error)
+         call link_exists(increments_group, zero_padded(k, increment_digits), exists, error)
          if (allocated(error) .or. .not. exists) exit
-         call open_group(increments_group, group_name(k), group, error)
+         call open_group(increments_group, zero_padded(k, increment_digits), group, error)
          if (allocated(error)) exit
          call attribute_exists(group, 'complete', complete, error)
          if (complete .and. .not. allocated(error)) then
@@ -542,7 +534,7 @@ contains
          return
       end if
       time = times(found)
-      call open_group(file, 'increments/'//group_name(numbers(found)), group, error)
+      call open_group(file, 'increments/'//zero_padded(numbers(found), increment_digits), group, error)
    end subroutine open_increment
 
    !> Restart state of increment (selector_step, selector_increment) of the results file `path`:

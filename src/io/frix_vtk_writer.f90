@@ -24,7 +24,7 @@
 module frix_vtk_writer
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, zero_padded
    use frix_mesh, only: mesh_t
    use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises_field
    use frix_text_output, only: real_edit, open_for_writing, put, close_written_file
@@ -127,8 +127,8 @@ contains
       call recover(mesh, strain, node_strain, cell_strain, error)
       if (allocated(error)) return
 
-      file_name = base_name(self%base)//'_'//padded(step)//'_'//padded(increment)//'.vtu'
-      path = self%base//'_'//padded(step)//'_'//padded(increment)//'.vtu'
+      file_name = base_name(self%base)//'_'//zero_padded(step, 4)//'_'//zero_padded(increment, 4)//'.vtu'
+      path = self%base//'_'//zero_padded(step, 4)//'_'//zero_padded(increment, 4)//'.vtu'
       call open_for_writing(path, 'VTK file "'//path//'"', unit, error)
       if (allocated(error)) return
       stat = 0
@@ -326,15 +326,6 @@ contains
       is_true = .false.
       if (present(flag)) is_true = flag
    end function is_true
-
-   !> Integer with at least 4 digits, zero-padded (file names sort in order).
-   pure function padded(value) result(text)
-      integer, intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=16) :: buffer
-      write (buffer, '(i0.4)') value
-      text = trim(buffer)
-   end function padded
 
    !> The part of `path` after its last '/'.
    pure function base_name(path) result(name)

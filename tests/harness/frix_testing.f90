@@ -11,6 +11,7 @@ module frix_testing
 
    public :: unittest_t, new_unittest, test_procedure, collect_interface
    public :: check, check_close, check_message_contains, run_suites, testsuite_t, new_testsuite
+   public :: output_path
 
    abstract interface
       !> One test: leaves `error` unallocated on success.
@@ -126,4 +127,19 @@ contains
       if (failed > 0) error stop 1
       if (passed == 0) error stop 77
    end subroutine run_suites
+
+   !> `name` in the folder named by the environment variable FRIX_TEST_OUTPUT_DIR, else in the
+   !> working directory: where the test suites write their files.
+   function output_path(name) result(path)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      character(len=1024) :: folder
+      integer :: length, stat
+      call get_environment_variable('FRIX_TEST_OUTPUT_DIR', folder, length, stat)
+      if (stat == 0 .and. length > 0) then
+         path = trim(folder)//'/'//name
+      else
+         path = name
+      end if
+   end function output_path
 end module frix_testing

@@ -19,7 +19,7 @@ module hdf5_roundtrip_suite
    use frix_hdf5_results, only: hdf5_results_t, read_restart, list_increments, read_increment_array
    use frix_hdf5_support, only: hdf5_location_t, create_group, close_group, write_attribute
    use hdf5, only: h5fopen_f, h5fclose_f, h5f_acc_rdwr_f
-   use frix_testing, only: unittest_t, new_unittest, check, check_message_contains
+   use frix_testing, only: unittest_t, new_unittest, check, check_message_contains, output_path
    implicit none
    private
 
@@ -50,20 +50,6 @@ contains
                new_unittest('error: unwritable path', test_unwritable), &
                new_unittest('error: set name with slash', test_bad_set_name)]
    end subroutine collect_hdf5_roundtrip
-
-   !> `name` in the folder named by FRIX_TEST_OUTPUT_DIR, else in the working directory.
-   function output_path(name) result(path)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable :: path
-      character(len=1024) :: folder
-      integer :: length, stat
-      call get_environment_variable('FRIX_TEST_OUTPUT_DIR', folder, length, stat)
-      if (stat == 0 .and. length > 0) then
-         path = trim(folder)//'/'//name
-      else
-         path = name
-      end if
-   end function output_path
 
    !> The file checked by h5py_layout_test.sh.
    function results_file_path() result(path)

@@ -4,9 +4,9 @@ module test_history_writer
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
-   use frix_testing, only: unittest_t, new_unittest, check, check_message_contains
+   use frix_testing, only: unittest_t, new_unittest, check, check_message_contains, output_path
    use frix_history_writer, only: history_t, history_dof_code, history_label, history_uz, history_rx, history_ux
-   use test_io_fixtures, only: two_element_mesh, linear_displacement, output_path, read_lines
+   use test_io_fixtures, only: two_element_mesh, linear_displacement, read_lines
    implicit none
    private
 

@@ -7,7 +7,7 @@ module test_io_fixtures
    implicit none
    private
 
-   public :: two_element_mesh, linear_displacement, output_path, read_lines
+   public :: two_element_mesh, linear_displacement, read_lines
 
 contains
 
@@ -40,21 +40,6 @@ contains
       displacement(2, :) = -factor*2.0e-3_dp*mesh%coords(2, :)
       displacement(3, :) = factor*(3.0e-3_dp*mesh%coords(3, :) + 1.0e-4_dp*mesh%coords(1, :))
    end function linear_displacement
-
-   !> `name` in the folder named by the environment variable FRIX_TEST_OUTPUT_DIR, else in the
-   !> working directory.
-   function output_path(name) result(path)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable :: path
-      character(len=1024) :: folder
-      integer :: length, stat
-      call get_environment_variable('FRIX_TEST_OUTPUT_DIR', folder, length, stat)
-      if (stat == 0 .and. length > 0) then
-         path = trim(folder)//'/'//name
-      else
-         path = name
-      end if
-   end function output_path
 
    !> Lines of a text file (at most 200 characters each are kept).
    subroutine read_lines(path, lines, error)

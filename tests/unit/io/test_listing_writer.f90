@@ -5,9 +5,9 @@ module test_listing_writer
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
-   use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains
+   use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains, output_path
    use frix_listing_writer, only: listing_t
-   use test_io_fixtures, only: two_element_mesh, linear_displacement, output_path, read_lines
+   use test_io_fixtures, only: two_element_mesh, linear_displacement, read_lines
    implicit none
    private
 
