@@ -6,14 +6,8 @@ set -u
 [ $# -ge 3 ] || { echo "usage: run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]..." >&2; exit 2; }
 frix=$1; deck=$2; upper=$3; shift 3
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-name=$(basename "$deck" .dck)
-start=$(date +%s.%N)
-if ! "$frix" "$deck" --out "$work" > "$work/run.log" 2>&1; then
-    echo "run_v5.sh: frix failed on $deck:"; grep -v '^  step' "$work/run.log" | tail -n 20; exit 1
-fi
-awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "run time %.2f s\n", e - s }'
+source "$here/run_common.sh"
+run_in_scratch run_v5.sh "$frix" "$deck"
 grep -c '^  step' "$work/run.log" | awk '{ print "residual evaluations (ITER 0, 1, ...):", $1 }'
 args=()
 while [ $# -gt 0 ]; do

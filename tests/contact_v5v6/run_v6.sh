@@ -1,19 +1,13 @@
 #!/bin/bash
-# run_v6.sh FRIX DECK [--check KEY=LO:HI]... [--keep DIR]
+# run_v6.sh FRIX DECK [--check KEY=LO:HI]...
 # V6 Hertz: run frix on DECK (inputs/v6_hertz) in a scratch folder, then v6_hertz_check.py on
 # the last increment with the deck's data P = 400, R = 1, E = 1e5, nu = 0.3.
 set -u
 [ $# -ge 2 ] || { echo "usage: run_v6.sh FRIX DECK [--check KEY=LO:HI]..." >&2; exit 2; }
 frix=$1; deck=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-name=$(basename "$deck" .dck)
-start=$(date +%s.%N)
-if ! "$frix" "$deck" --out "$work" > "$work/run.log" 2>&1; then
-    echo "run_v6.sh: frix failed on $deck:"; grep -v '^  step' "$work/run.log" | tail -n 20; exit 1
-fi
-awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "run time %.2f s\n", e - s }'
+source "$here/run_common.sh"
+run_in_scratch run_v6.sh "$frix" "$deck"
 grep -E '^  converged|linear solver' "$work/run.log"
 args=()
 while [ $# -gt 0 ]; do
