@@ -394,12 +394,10 @@ contains
       type(sparse_matrix_t), intent(inout), optional :: matrix
       logical, intent(in), optional :: predictor  !! first iteration of an increment: add the touching stiffness
       real(dp) :: x_slave(3), x_face(3, 4), force(27), tangent(27, 27)
-      real(dp) :: force3(3), tangent3(3, 3), v(15), normal(3), shape(4), d_xi(4), d_eta(4)
-      integer :: p, i, a, k, slave, nodes(9), n_nodes, n, node, attempt
-      real(dp) :: touch_normal, touch_tangential, directions(3, 3), weights(3)
+      real(dp) :: force3(3), tangent3(3, 3), shape(4), d_xi(4), d_eta(4)
+      integer :: p, i, a, slave, nodes(9), n_nodes, n, node, attempt
+      real(dp) :: touch_normal, touch_tangential
       logical :: touching_stiffness
-      real(dp), parameter :: identity(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
-                                                       0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
 
       touching_stiffness = .false.
       if (present(predictor)) touching_stiffness = predictor
@@ -422,12 +420,8 @@ contains
                   end do
                   if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                       pass%result(i)%gap <= pair%parameters%gap_tolerance) then
-                     ! touching: normal (and, with friction, stick) stiffness without force
-                     normal = pair%plane_normal
-                     do a = 1, 3
-                        tangent3(:, a) = tangent3(:, a) + pass%area(i)*(touch_normal*normal*normal(a) + &
-                                         touch_tangential*(identity(:, a) - normal*normal(a)))
-                     end do
+                     call add_touching_stiffness(pass%area(i), touch_normal, touch_tangential, &
+                                                 pair%plane_normal, [1.0_dp], tangent3)
                   end if
                   fint(3*slave - 2:3*slave) = fint(3*slave - 2:3*slave) + force3
                   if (present(matrix)) call matrix%add_element([slave], tangent3)
@@ -457,23 +451,9 @@ contains
                end do
                if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
                    pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= pair%parameters%gap_tolerance) then
-                  ! touching: stiffness A (eps_N v_n v_n^T + eps_T sum_t v_t v_t^T) without force,
-                  ! v_d = [d, -N_a d] for the normal d = n and two tangents d = t1, t2
-                  normal = face_normal(x_face, pass%result(i)%xi)
                   call face_shape_functions(pass%result(i)%xi, shape, d_xi, d_eta)
-                  call tangent_basis(normal, directions(:, 2), directions(:, 3))
-                  directions(:, 1) = normal
-                  weights = [touch_normal, touch_tangential, touch_tangential]
-                  do k = 1, 3
-                     if (weights(k) == 0.0_dp) cycle
-                     v(1:3) = directions(:, k)
-                     do a = 1, 4
-                        v(3*a + 1:3*a + 3) = -shape(a)*directions(:, k)
-                     end do
-                     do a = 1, 15
-                        tangent(:15, a) = tangent(:15, a) + weights(k)*pass%area(i)*v*v(a)
-                     end do
-                  end do
+                  call add_touching_stiffness(pass%area(i), touch_normal, touch_tangential, &
+                                              face_normal(x_face, pass%result(i)%xi), [1.0_dp, -shape], tangent(:15, :15))
                end if
                do a = 1, 5
                   node = nodes(a)
@@ -516,19 +496,26 @@ contains
       end if
    end function slip_reversed
 
-   !> Two unit vectors completing the unit vector n to an orthonormal basis.
-   pure subroutine tangent_basis(normal, first, second)
-      real(dp), intent(in) :: normal(3)
-      real(dp), intent(out) :: first(3), second(3)
-      if (abs(normal(1)) < 0.9_dp) then
-         first = [0.0_dp, -normal(3), normal(2)]   ! e_x x n
-      else
-         first = [normal(3), 0.0_dp, -normal(1)]   ! e_y x n
-      end if
-      first = first/norm2(first)
-      second = [normal(2)*first(3) - normal(3)*first(2), normal(3)*first(1) - normal(1)*first(3), &
-                normal(1)*first(2) - normal(2)*first(1)]
-   end subroutine tangent_basis
+   !> Touching stiffness (no force): D = A (eps_N n n + eps_T (I - n n)) acting on the gap of
+   !> the slave node relative to its contact point, K_ab += c_a c_b D over the kernel's nodes with
+   !> c = [1, -N_1, ..., -N_4] on a master face, [1] against a rigid plane (force/length).
+   pure subroutine add_touching_stiffness(area, normal_penalty, tangential_penalty, normal, weights, tangent)
+      real(dp), intent(in) :: area, normal_penalty, tangential_penalty
+      real(dp), intent(in) :: normal(3)       !! unit normal n
+      real(dp), intent(in) :: weights(:)      !! c_a per node of the kernel
+      real(dp), intent(inout) :: tangent(:, :)  !! (3 size(weights), 3 size(weights))
+      real(dp) :: block(3, 3)
+      integer :: a, b, k
+      do k = 1, 3
+         block(:, k) = area*(normal_penalty - tangential_penalty)*normal*normal(k)
+         block(k, k) = block(k, k) + area*tangential_penalty
+      end do
+      do b = 1, size(weights)
+         do a = 1, size(weights)
+            tangent(3*a - 2:3*a, 3*b - 2:3*b) = tangent(3*a - 2:3*a, 3*b - 2:3*b) + weights(a)*weights(b)*block
+         end do
+      end do
+   end subroutine add_touching_stiffness
 
    !> Accept the current contact state as converged: anchors and accumulated slip.
    subroutine commit_contact(system)
