@@ -142,6 +142,15 @@ class _Block:
             raise self.error(f"unexpected extra data {text!r}", line)
 
 
+def _read_node_rows(block, n, k, what):
+    """n rows "node id (1..n), k reals" as an (n, k) array."""
+    values = np.empty((n, k))
+    for i in range(n):
+        block.expect_id(i + 1, "node id")
+        values[i] = [block.real(what) for _ in range(k)]
+    return values
+
+
 def _blocks(path):
     try:
         with open(path, encoding="ascii", errors="strict") as stream:
@@ -245,22 +254,14 @@ def _read_step_block(block, name, step, model):
     elif name == "NODAL.DISPLACEMENT":
         n = block.integer("number of nodes", 0)
         step.displacement_label = block.string("label")
-        values = np.empty((n, 6))
-        for i in range(n):
-            block.expect_id(i + 1, "node id")
-            values[i] = [block.real("displacement") for _ in range(6)]
-        step.displacement = values
+        step.displacement = _read_node_rows(block, n, 6, "displacement")
     elif name == "NODAL.SCALAR":
         k = block.integer("number of scalars", 0)
         step.nodal_scalar_names = [block.string("scalar name") for _ in range(k)]
     elif name == "NODAL.SCALAR.DATA":
         n = block.integer("number of nodes", 0)
         k = len(step.nodal_scalar_names)
-        values = np.empty((n, k))
-        for i in range(n):
-            block.expect_id(i + 1, "node id")
-            values[i] = [block.real("scalar") for _ in range(k)]
-        step.nodal_scalars = values
+        step.nodal_scalars = _read_node_rows(block, n, k, "scalar")
     elif name == "ELEMENT.GAUSS.SCALAR":
         k = block.integer("number of scalars", 0)
         step.gauss_scalar_names = [block.string("scalar name") for _ in range(k)]
