@@ -171,7 +171,8 @@ contains
                if (.not. context%quiet) write (*, '(2x,i0,a)') n_released, &
                   ' nodes held in stick released to slip'
                if (iteration >= max_iterations) then
-                  report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'
+                  report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'// &
+                                   worst_entries(model, context)
                   return
                end if
                energy = 0.0_dp
@@ -180,12 +181,13 @@ contains
             end if
          end if
          if (iteration >= max_iterations) then
-            report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'
+            report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'// &
+                             worst_entries(model, context)
             return
          end if
          if (iteration > 0 .and. residual_norm > divergence_factor*report%residual_norms(0) .and. &
              report%residual_norms(0) > 0.0_dp) then
-            report%failure = 'the iterations diverge'
+            report%failure = 'the iterations diverge'//worst_entries(model, context)
             return
          end if
 
@@ -403,14 +405,39 @@ contains
       type(model_t), intent(in) :: model
       integer, intent(in) :: equation   !! where the factorization failed, 0: unknown
       type(error_t), allocatable, intent(inout) :: error
-      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
       if (equation <= 0) return
       error%message = error%message//new_line('a')// &
-                      model%deck_path//': the stiffness matrix is singular at node '// &
-                      to_string(model%mesh%node_ids((equation - 1)/3 + 1))//', direction '// &
-                      direction(mod(equation - 1, 3) + 1)// &
+                      model%deck_path//': the stiffness matrix is singular at '// &
+                      equation_label(model, equation)// &
                       ': is that part of the model held against rigid-body motion?'
    end subroutine describe_singularity
+
+   !> 'node <user id>, direction x|y|z' of global equation `equation` (node-major, 3 per node).
+   function equation_label(model, equation) result(text)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: equation
+      character(len=:), allocatable :: text
+      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
+      text = 'node '//to_string(model%mesh%node_ids((equation - 1)/3 + 1))//', direction '// &
+             direction(mod(equation - 1, 3) + 1)
+   end function equation_label
+
+   !> Where the last iterate is worst, appended to a failure message (as an Abaqus message file
+   !> names the largest residual force and displacement correction): the largest residual
+   !> component (force) and the largest component of the last Newton correction (length),
+   !> each with its node and direction; the last correction is that of the solve, before any
+   !> line-search shortening.
+   function worst_entries(model, context) result(text)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(in) :: context
+      character(len=:), allocatable :: text
+      integer :: residual_at, correction_at
+      residual_at = maxloc(abs(context%residual), dim=1)
+      correction_at = maxloc(abs(context%correction), dim=1)
+      text = '; largest residual '//to_string(context%residual(residual_at))//' at '// &
+             equation_label(model, residual_at)//', largest Newton correction '// &
+             to_string(context%correction(correction_at))//' at '//equation_label(model, correction_at)
+   end function worst_entries
 
    !> The residual that round-off alone produces: forces computed from positions (penalty
    !> contact eps_N A g, strains from x - X) carry errors of about epsilon |K_ii| |x_i| per
