@@ -9,7 +9,7 @@ set(s3_reference ${s3_dir}/reference_coarse_epsn1e6.txt)
 
 # The benchmark as specified (EPSN 1e8, EPST 1e6, HEX8 + EAS 3 = the seed's Hexa8-E3): coarse
 # mesh, mu = 0.5, 0.1, 0.25. Convergence to the full load and equilibrium. mu = 0.5 and 0.25
-# converge (6 increments, 1-4 s each); mu = 0.1 stops at t = 0.76 (s3.md "Low friction"):
+# converge (6 increments, 1-4 s each); mu = 0.1 stops at t = 0.754 (s3.md "The punch corner"):
 # that test is disabled until it is solved. (With EAS 9 mu = 0.25 stopped at t = 0.90.)
 foreach(mu 0.5 0.1 0.25)
   add_test(NAME contact_s3_coarse_mu${mu}

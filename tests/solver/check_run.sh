@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs frix on a deck that must fail in a controlled way and checks what the user sees.
-#   check_run.sh FRIX DECK EXPECTED_STATUS "message fragment" [file that must exist ...]
-# Passes when: the exit status equals EXPECTED_STATUS, stderr+stdout contain the fragment,
+#   check_run.sh FRIX DECK EXPECTED_STATUS "fragment[|fragment...]" [file that must exist ...]
+# Passes when: the exit status equals EXPECTED_STATUS, stderr+stdout contain every fragment
+# (several are separated by '|'),
 # there is no Fortran runtime error or backtrace, and every listed result file exists (the
 # results of converged increments are kept when a run fails).
 set -u
@@ -14,9 +15,12 @@ fail=0
 if [ "$status" -ne "$expected_status" ]; then
   echo "FAIL: exit status $status, expected $expected_status"; fail=1
 fi
-if ! grep -qF -- "$fragment" "$out/stdout" "$out/stderr"; then
-  echo "FAIL: output lacks \"$fragment\""; fail=1
-fi
+IFS='|' read -ra fragments <<< "$fragment"
+for piece in "${fragments[@]}"; do
+  if ! grep -qF -- "$piece" "$out/stdout" "$out/stderr"; then
+    echo "FAIL: output lacks \"$piece\""; fail=1
+  fi
+done
 if grep -qE 'Fortran runtime error|Backtrace|SIGSEGV|ERROR STOP' "$out/stdout" "$out/stderr"; then
   echo "FAIL: crash output"; fail=1
 fi
