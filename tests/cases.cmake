@@ -40,6 +40,16 @@ add_test(NAME solver_limit_point_values
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck)
 set_tests_properties(solver_limit_point_values PROPERTIES LABELS regression)
+# Path following (CONTROL Path, docs/solver.md): the same cube passes its limit point with the
+# top node's displacement driven; and lands on t = 1 when the full load comes first.
+add_test(NAME solver_path_following_limit_point
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_following_check.sh ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_path.dck 250 passes)
+add_test(NAME solver_path_following_landing
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_following_check.sh ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_path_landing.dck 150 lands)
+set_tests_properties(solver_path_following_limit_point solver_path_following_landing
+                     PROPERTIES LABELS regression)
 
 # POS3D neutral file: writer checks on synthetic data, and a run read back independently.
 add_executable(pos3d_writer_check ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_writer_check.f90)

@@ -15,13 +15,18 @@ module frix_external_loads
 contains
 
    !> fext(t) at displacements u. With `matrix` present, the follower-load stiffness is
-   !> subtracted from it (the matrix must already hold d fint / d u).
-   subroutine assemble_external(model, time, u, fext, matrix)
+   !> subtracted from it (the matrix must already hold d fint / d u). With `step_window`
+   !> = (t_start, t_end) of a path-following step, every load's curve factor is replaced by
+   !> its straight line through the step's ends, extended beyond them: the load is the value
+   !> at the start plus (t - t_start) / (t_end - t_start) times the step's load change (the
+   !> load factor of path following scales that change; curves shape nothing inside the step).
+   subroutine assemble_external(model, time, u, fext, matrix, step_window)
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: time
       real(dp), intent(in) :: u(:)
       real(dp), intent(out) :: fext(:)
       type(sparse_matrix_t), intent(inout), optional :: matrix
+      real(dp), intent(in), optional :: step_window(2)
       integer :: i, k, a, node, e, face, equation
       real(dp) :: factor, coords(3, 4), displacement(3, 4), force(12), stiffness(12, 12)
       real(dp) :: weights(8), element_coords(3, 8)
@@ -31,7 +36,7 @@ contains
       if (allocated(model%nodal_forces)) then
          do i = 1, size(model%nodal_forces)
             associate (load => model%nodal_forces(i))
-               factor = load%value*curve_factor(model, load%curve, time)
+               factor = load%value*load_factor(load%curve)
                do k = 1, size(load%nodes)
                   equation = 3*(load%nodes(k) - 1) + load%component
                   fext(equation) = fext(equation) + factor
@@ -44,7 +49,7 @@ contains
          do i = 1, size(model%pressures)
             associate (load => model%pressures(i), &
                        surface => model%mesh%surfaces(model%pressures(i)%surface))
-               factor = load%value*curve_factor(model, load%curve, time)
+               factor = load%value*load_factor(load%curve)
                if (factor == 0.0_dp) cycle
                do k = 1, size(surface%elements)
                   e = surface%elements(k)
@@ -71,7 +76,7 @@ contains
       if (allocated(model%body_forces)) then
          do i = 1, size(model%body_forces)
             associate (load => model%body_forces(i))
-               factor = curve_factor(model, load%curve, time)
+               factor = load_factor(load%curve)
                if (factor == 0.0_dp) cycle
                do k = 1, size(load%elements)
                   e = load%elements(k)
@@ -91,6 +96,19 @@ contains
             end associate
          end do
       end if
+   contains
+      !> The factor of `curve` at `time` (see above for `step_window`).
+      real(dp) function load_factor(curve)
+         integer, intent(in) :: curve
+         real(dp) :: at_start
+         if (.not. present(step_window)) then
+            load_factor = curve_factor(model, curve, time)
+            return
+         end if
+         at_start = curve_factor(model, curve, step_window(1))
+         load_factor = at_start + (time - step_window(1))/(step_window(2) - step_window(1))* &
+                       (curve_factor(model, curve, step_window(2)) - at_start)
+      end function load_factor
    end subroutine assemble_external
 
    !> Constrained equations and their prescribed values at time t. Nodes that belong to no

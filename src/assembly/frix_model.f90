@@ -69,10 +69,16 @@ module frix_model
       real(dp), allocatable :: factors(:)
    end type load_curve_t
 
+   !> A load step from t = s-1 to t = s. With `CONTROL Path` the pseudo time (the load factor) is
+   !> an unknown of each increment and one displacement component drives the step instead
+   !> (docs/solver.md, "Path following").
    type :: step_t
       integer :: n_increments = 1
       integer :: max_iterations = 0       !! 0: use the solver controls' value
-      character(len=:), allocatable :: control  !! 'LOAD' or 'DISPLACEMENT' (as declared)
+      character(len=:), allocatable :: control  !! 'LOAD', 'DISPLACEMENT' (as declared) or 'PATH'
+      integer :: path_node = 0            !! CONTROL Path: internal number of the driving node
+      integer :: path_component = 0       !! its driven component, 1 = x, 2 = y, 3 = z
+      real(dp) :: path_target = 0.0_dp    !! the displacement [length] at which the step ends
    end type step_t
 
    type :: solver_controls_t

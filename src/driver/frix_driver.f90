@@ -8,15 +8,22 @@
 !> every increment that converged in at most a third of MAXITER iterations. When an increment
 !> of the smallest size fails, the run stops with a message and a non-zero exit; the results
 !> of every converged increment are already on disk.
+!>
+!> A step with CONTROL Path advances the driving displacement instead, by (TARGET - its value
+!> at the start of the step) / NUMSTEP per increment, with the load factor an unknown (the same
+!> cut-back and growth of the increment size); it ends when the displacement reaches TARGET.
+!> An increment whose load factor passes the step's end is repeated under load control to
+!> t = s, which ends the step.
 module frix_driver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
-   use frix_model, only: model_t
+   use frix_model, only: model_t, step_t
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
                                   restore_state
-   use frix_newton_solver, only: newton_context_t, newton_report_t, setup_newton, solve_increment
+   use frix_newton_solver, only: newton_context_t, newton_report_t, path_constraint_t, setup_newton, &
+                                 solve_increment
    use frix_results_output, only: results_output_t
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
@@ -170,6 +177,10 @@ contains
       integer :: increment, max_iterations
       real(dp) :: smallest, increment_start, previous_time
       character(len=64) :: label
+      character(len=:), allocatable :: attempted
+      type(path_constraint_t) :: path
+      logical :: path_control, landing
+      real(dp) :: path_increment   !! driven displacement per nominal increment [length]
 
       step_end = real(step, dp)
       nominal = 1.0_dp/model%steps(step)%n_increments
@@ -178,15 +189,47 @@ contains
       size_now = nominal
       smallest = nominal*0.5_dp**model%controls%max_cutbacks
       increment = first_increment
+      path_control = model%steps(step)%control == 'PATH'
+      landing = .false.
+      if (path_control) then
+         path%equation = 3*(model%steps(step)%path_node - 1) + model%steps(step)%path_component
+         path%step_start = step_end - 1.0_dp
+         path%step_end = step_end
+         path_increment = (model%steps(step)%path_target - state%committed_u(path%equation))/ &
+                          model%steps(step)%n_increments
+      end if
       do while (state%committed_time < step_end - 1.0e-12_dp)
-         target_time = min(state%committed_time + size_now, step_end)
-         if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
          write (label, '("step",i3,"  incr",i4)') step, increment + 1
          increment_start = wall_clock_seconds()
          previous_time = state%committed_time
-         call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
-                              report, error)
-         if (allocated(error)) return
+         if (path_control .and. .not. landing) then
+            if (path_target_reached(model%steps(step), state%committed_u(path%equation))) exit
+            path%target = state%committed_u(path%equation) + path_increment*size_now/nominal
+            if ((path%target - model%steps(step)%path_target)*path_increment > 0.0_dp) &
+               path%target = model%steps(step)%path_target
+            attempted = 'the increment from t = '//time_text(state%committed_time)//' moving '// &
+                        driven_label(model, step)//' from '//time_text(state%committed_u(path%equation))// &
+                        ' to '//time_text(path%target)
+            call solve_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
+                                 report, error, path)
+            if (allocated(error)) return
+            if (report%converged .and. state%time > step_end) then
+               ! past the step's end: land on it under load control
+               call restore_state(state)
+               landing = .true.
+               if (.not. quiet) write (*, '(2x,a)') 'the load factor passes t = '//time_text(step_end)// &
+                  ' in this increment: repeated under load control to t = '//time_text(step_end)
+               size_now = step_end - state%committed_time
+               cycle
+            end if
+         else
+            target_time = min(state%committed_time + size_now, step_end)
+            if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
+            attempted = 'the increment from t = '//time_text(state%committed_time)//' to t = '//time_text(target_time)
+            call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
+                                 report, error)
+            if (allocated(error)) return
+         end if
          if (report%converged) then
             increment = increment + 1
             call commit_state(state)
@@ -201,8 +244,7 @@ contains
          else
             call restore_state(state)
             if (size_now <= smallest*(1.0_dp + 1.0e-9_dp)) then
-               call fatal_error(error, 'frix: step '//to_string(step)//': the increment from t = '// &
-                                time_text(state%committed_time)//' to t = '//time_text(target_time)// &
+               call fatal_error(error, 'frix: step '//to_string(step)//': '//attempted// &
                                 ' failed ('//report%failure//') at the smallest increment allowed ('// &
                                 to_string(model%controls%max_cutbacks)//' cut-backs of '// &
                                 time_text(nominal)//'); the results of the '// &
@@ -215,7 +257,27 @@ contains
                time_text(size_now)
          end if
       end do
+      if (path_control .and. .not. quiet .and. state%committed_time < step_end - 1.0e-12_dp) &
+         write (*, '(a)') 'frix: step '//to_string(step)//' ends at t = '//time_text(state%committed_time)// &
+         ': '//driven_label(model, step)//' reached its target '//time_text(model%steps(step)%path_target)
    end subroutine run_step
+
+   !> Whether the driving displacement of a CONTROL Path step is at its target (to round-off).
+   pure logical function path_target_reached(step, displacement) result(reached)
+      type(step_t), intent(in) :: step
+      real(dp), intent(in) :: displacement
+      reached = abs(displacement - step%path_target) <= 1.0e-12_dp*max(1.0_dp, abs(step%path_target))
+   end function path_target_reached
+
+   !> 'the displacement of node <id> in direction x|y|z' of a CONTROL Path step.
+   function driven_label(model, step) result(text)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step
+      character(len=:), allocatable :: text
+      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
+      text = 'the displacement of node '//to_string(model%mesh%node_ids(model%steps(step)%path_node))// &
+             ' in '//direction(model%steps(step)%path_component)
+   end function driven_label
 
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
    !> file of an earlier run of the same model, and say where the run continues: the step
@@ -320,7 +382,13 @@ contains
       integer, intent(in) :: iterations
       real(dp) :: left, end_time
       end_time = real(size(model%steps), dp)
-      left = seconds*(end_time - time)/max(time - previous_time, tiny(1.0_dp))
+      if (time <= previous_time) then   ! path following past a limit point: the load decreases
+         write (*, '(2x,"converged in",i3," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
+                '" (",f5.1," %)")') iterations, seconds, time, end_time, 100.0_dp*time/end_time
+         flush (6)
+         return
+      end if
+      left = seconds*(end_time - time)/(time - previous_time)
       write (*, '(2x,"converged in",i3," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
              '" (",f5.1," %),  about",f10.1," s left")') iterations, seconds, time, end_time, &
          100.0_dp*time/end_time, left

@@ -9,6 +9,13 @@
 !> rule). With contact, an iterate is converged only when no slave node is held in a friction
 !> branch other than the law's own (slip reversal, frix_contact_assembly). The energy norm
 !> printed per iteration is |du . r| of the correction just made.
+!>
+!> Path following (a `path_constraint_t` given): the load factor t is an unknown of the
+!> increment, found at every iteration with the correction from one displacement constraint
+!> u_c = target (Batoz & Dhatt, "Incremental displacement algorithms for nonlinear problems",
+!> IJNME 14 (1979) 1262-1267): K a = r, K b = q with q = d fext / dt the load rate at the current
+!> geometry, then dt = (target - u_c - a_c) / b_c and du = a + dt b. The increment can then pass a
+!> limit point of the load, where K is singular along the path and load control fails.
 module frix_newton_solver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -26,7 +33,15 @@ module frix_newton_solver
    implicit none
    private
 
-   public :: newton_context_t, newton_report_t, setup_newton, solve_increment
+   public :: newton_context_t, newton_report_t, path_constraint_t, setup_newton, solve_increment
+
+   !> The constraint of a path-following increment (see the module head).
+   type :: path_constraint_t
+      integer :: equation = 0           !! the driven global equation (node-major, 3 per node)
+      real(dp) :: target = 0.0_dp       !! its displacement at the end of the increment [length]
+      real(dp) :: step_start = 0.0_dp   !! the step's pseudo times: q is the load change
+      real(dp) :: step_end = 1.0_dp     !! between them (exact for loads linear in the step)
+   end type path_constraint_t
 
    !> Everything the iterations need that outlives one increment.
    type :: newton_context_t
@@ -40,6 +55,10 @@ module frix_newton_solver
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
       real(dp), allocatable :: reactions(:) !! fint - fext on constrained equations, 0 elsewhere
       real(dp), allocatable :: diagonal(:)  !! diagonal of the tangent just assembled
+      real(dp), allocatable :: load_rate(:)      !! path following: q = d fext / dt
+      real(dp), allocatable :: load_response(:)  !! path following: b = K^-1 q
+      logical :: path_following = .false.        !! in a path-following increment
+      real(dp) :: step_window(2) = [0.0_dp, 1.0_dp]  !! its step's pseudo times (loads linear in t)
       logical :: quiet = .false.
       logical :: has_contact = .false.
       type(contact_system_t) :: contact     !! contact search, slip history, contact assembly
@@ -99,15 +118,17 @@ contains
       if (allocated(error)) return
       allocate (context%fixed(n), context%prescribed(n))
       allocate (context%fint(n), context%fext(n), context%residual(n), context%correction(n), &
-                context%reactions(n), context%diagonal(n), source=0.0_dp)
+                context%reactions(n), context%diagonal(n), context%load_rate(n), context%load_response(n), &
+                source=0.0_dp)
    end subroutine setup_newton
 
-   !> Iterate from the committed state to equilibrium at pseudo time `time`. On return
-   !> state holds the last iterate (converged or not); the caller commits or restores.
-   !> `error` is set only for failures that a smaller increment cannot cure (a singular
-   !> matrix at the first iteration, a solver failure); non-convergence is reported in
-   !> `report` instead.
-   subroutine solve_increment(model, context, state, time, max_iterations, label, report, error)
+   !> Iterate from the committed state to equilibrium at pseudo time `time`, or, with `path`,
+   !> to equilibrium on the constraint u_c = path%target with the pseudo time an unknown that
+   !> starts from `time`. On return state holds the last iterate (converged or not) and its
+   !> pseudo time; the caller commits or restores. `error` is set only for failures that a
+   !> smaller increment cannot cure (a singular matrix at the first iteration, a solver
+   !> failure); non-convergence is reported in `report` instead.
+   subroutine solve_increment(model, context, state, time, max_iterations, label, report, error, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -116,12 +137,16 @@ contains
       character(len=*), intent(in) :: label   !! "step s incr k" for the progress lines
       type(newton_report_t), intent(out) :: report
       type(error_t), allocatable, intent(out) :: error
+      type(path_constraint_t), intent(in), optional :: path
       type(error_t), allocatable :: inner_error
       integer :: iteration, n_released
       real(dp) :: residual_norm, reference, correction_norm, u_norm, energy
-      real(dp) :: diagonal_scale
+      real(dp) :: diagonal_scale, current_time, time_correction
 
+      current_time = time
       state%time = time
+      context%path_following = present(path)
+      if (present(path)) context%step_window = [path%step_start, path%step_end]
       context%use_fallback = .false.
       if (context%has_contact) call reset_friction_branches(context%contact)
       call prescribed_displacements(model, time, context%fixed, context%prescribed)
@@ -133,7 +158,7 @@ contains
       allocate (report%active(0:max_iterations), report%slipping(0:max_iterations), source=0)
 
       do iteration = 0, max_iterations
-         call evaluate_equilibrium(model, context, state, time, .true., residual_norm, reference, &
+         call evaluate_equilibrium(model, context, state, current_time, .true., residual_norm, reference, &
                                    report%failure, error, predictor=iteration == 0)
          if (allocated(error) .or. allocated(report%failure)) return
          call context%matrix%get_diagonal(context%diagonal)
@@ -144,7 +169,7 @@ contains
          if (context%has_contact) then
             call contact_counts(context%contact, report%active(iteration), report%slipping(iteration))
          end if
-         if (.not. context%quiet) call print_progress(label, time, iteration, residual_norm, &
+         if (.not. context%quiet) call print_progress(label, current_time, iteration, residual_norm, &
                                                       residual_norm/reference, energy, context%has_contact, &
                                                       report%active(iteration), report%slipping(iteration))
 
@@ -154,7 +179,8 @@ contains
          end if
          u_norm = norm2(state%u)
          if (residual_norm <= max(model%controls%tol_residual*reference, &
-                                  roundoff_floor(model, context, state%u))) then
+                                  roundoff_floor(model, context, state%u)) .and. &
+             on_path(model, state, path)) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
                if (.not. context%has_contact) then
@@ -185,8 +211,9 @@ contains
                              worst_entries(model, context)
             return
          end if
+         ! (path following starts from an equilibrium state: no reference to diverge from)
          if (iteration > 0 .and. residual_norm > divergence_factor*report%residual_norms(0) .and. &
-             report%residual_norms(0) > 0.0_dp) then
+             report%residual_norms(0) > 0.0_dp .and. .not. present(path)) then
             report%failure = 'the iterations diverge'//worst_entries(model, context)
             return
          end if
@@ -205,17 +232,71 @@ contains
             return
          end if
          where (context%fixed) context%correction = 0.0_dp
+         time_correction = 0.0_dp
+         if (present(path)) then
+            call path_correction(model, context, state, path, time_correction, report%failure, error)
+            if (allocated(error) .or. allocated(report%failure)) return
+         end if
          energy = abs(dot_product(context%correction, context%residual))
          correction_norm = norm2(context%correction)
          state%u = state%u + context%correction
+         current_time = current_time + time_correction
+         state%time = current_time
          context%n_iterations = context%n_iterations + 1
          if (context%has_contact .and. iteration > 0) then
-            call contact_line_search(model, context, state, time, residual_norm, correction_norm, &
-                                     report%failure, error)
+            call contact_line_search(model, context, state, current_time, time_correction, residual_norm, &
+                                     correction_norm, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
       end do
    end subroutine solve_increment
+
+   !> Path following: the load-factor correction dt of this iteration and the correction
+   !> du = a + dt b, where a = K^-1 r is in context%correction (with K still factorized) and
+   !> b = K^-1 q answers the load rate q = (fext(step_end) - fext(step_start)) / (step_end -
+   !> step_start) at the current geometry (follower loads included), which is d fext / dt of
+   !> the loads of a path-following step (assemble_external's step_window).
+   subroutine path_correction(model, context, state, path, time_correction, failure, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(in) :: state
+      type(path_constraint_t), intent(in) :: path
+      real(dp), intent(out) :: time_correction
+      character(len=:), allocatable, intent(inout) :: failure
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: response
+      time_correction = 0.0_dp
+      call assemble_external(model, path%step_end, state%u, context%load_rate)
+      call assemble_external(model, path%step_start, state%u, context%load_response)
+      context%load_rate = (context%load_rate - context%load_response)/(path%step_end - path%step_start)
+      where (context%fixed) context%load_rate = 0.0_dp
+      if (context%use_fallback) then
+         call context%fallback%solve(context%matrix, context%load_rate, context%load_response, error)
+      else
+         call context%solver%solve(context%matrix, context%load_rate, context%load_response, error)
+      end if
+      if (allocated(error)) return
+      where (context%fixed) context%load_response = 0.0_dp
+      response = context%load_response(path%equation)
+      if (.not. abs(response) > 0.0_dp) then
+         failure = 'the loads do not move the driving displacement ('// &
+                   equation_label(model, path%equation)//')'
+         return
+      end if
+      time_correction = (path%target - state%u(path%equation) - context%correction(path%equation))/response
+      context%correction = context%correction + time_correction*context%load_response
+   end subroutine path_correction
+
+   !> Whether the driven displacement of a path-following increment is at its target, within
+   !> the displacement tolerance (TOLDISP ||u||); always true without a path.
+   logical function on_path(model, state, path)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(in) :: state
+      type(path_constraint_t), intent(in), optional :: path
+      on_path = .true.
+      if (.not. present(path)) return
+      on_path = abs(state%u(path%equation) - path%target) <= model%controls%tol_displacement*norm2(state%u)
+   end function on_path
 
    !> Internal, contact and external forces at state%u: the residual r = fext - fint on the
    !> free equations, the reactions on the constrained ones, ||r|| and the reference
@@ -252,10 +333,19 @@ contains
       if (with_tangent) then
          if (context%has_contact) &
             call assemble_contact(model, context%contact, state%u, context%fint, context%matrix, predictor)
-         call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
+         if (context%path_following) then
+            call assemble_external(model, time, state%u, context%fext, matrix=context%matrix, &
+                                   step_window=context%step_window)
+         else
+            call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
+         end if
       else
          if (context%has_contact) call assemble_contact(model, context%contact, state%u, context%fint)
-         call assemble_external(model, time, state%u, context%fext)
+         if (context%path_following) then
+            call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
+         else
+            call assemble_external(model, time, state%u, context%fext)
+         end if
       end if
       context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
       context%n_assemblies = context%n_assemblies + 1
@@ -284,13 +374,16 @@ contains
    !> element cannot be evaluated, the search stays below that step. The first trial whose
    !> residual norm is not larger than before is accepted; after `max_trials` the trial with
    !> the smallest residual norm is kept. The correction norm reported is that of the
-   !> accepted step.
-   subroutine contact_line_search(model, context, state, time, previous_norm, correction_norm, &
-                                  failure, error)
+   !> accepted step. With path following the pseudo time moves with the step, t_old + s dt
+   !> (`time` in: after the full step; out: after the accepted one).
+   subroutine contact_line_search(model, context, state, time, time_correction, previous_norm, &
+                                  correction_norm, failure, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
-      real(dp), intent(in) :: time, previous_norm
+      real(dp), intent(inout) :: time
+      real(dp), intent(in) :: time_correction   !! dt of the full step (0 without path following)
+      real(dp), intent(in) :: previous_norm
       real(dp), intent(inout) :: correction_norm
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
@@ -359,11 +452,15 @@ contains
             next = 0.5_dp*(low + high)
          end if
          state%u = state%u + (next - fraction)*context%correction
+         time = time + (next - fraction)*time_correction
+         state%time = time
          fraction = next
          context%n_line_search_trials = context%n_line_search_trials + 1
       end do
       ! no trial lowered the residual: keep the best one (u_old + best_fraction du)
       state%u = state%u + (best_fraction - fraction)*context%correction
+      time = time + (best_fraction - fraction)*time_correction
+      state%time = time
       correction_norm = best_fraction*norm2(context%correction)
    end subroutine contact_line_search
 

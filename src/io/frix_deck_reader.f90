@@ -26,7 +26,7 @@ module frix_deck_reader
    use frix_contact_parameters, only: new_contact_parameters
    use frix_model, only: contact_pair_t, model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t, &
                          load_curve_t, step_t, history_request_t, solver_auto, solver_cholmod, &
-                         solver_umfpack
+                         solver_umfpack, curve_factor
    use frix_text_scanner, only: text_scanner_t, open_text_file
    use frix_deck_tokens, only: deck_line_t, split_line, parse_real, parse_integer, &
                                is_section_line, section_name
@@ -576,21 +576,8 @@ contains
       integer, intent(inout) :: position
       type(history_request_t), intent(out) :: request
       logical, intent(inout) :: ok
-      integer :: id
       character(len=:), allocatable :: word
-      call reader%expect_keyword(line, position, 'NODE', ok)
-      call reader%take_integer(line, position, 'a node id', id, ok)
-      if (ok) then
-         request%node = reader%node_map%lookup(id)
-         if (request%node == 0) then
-            ok = .false.
-            if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'undefined node '//to_string(id))
-         end if
-      end if
-      call reader%expect_keyword(line, position, 'DOF', ok)
-      call reader%take_integer(line, position, 'a DOF index', request%component, ok)
-      call require(reader, ok, request%component >= 1 .and. request%component <= 3, line, position - 1, &
-                   'DOF index out of range 1..3')
+      call read_node_dof(reader, line, position, request%node, request%component, ok)
       if (.not. ok) return
       if (position <= line%n_tokens()) then
          if (line%keyword(position) == 'KIND') then
@@ -607,6 +594,31 @@ contains
          end if
       end if
    end subroutine read_history
+
+   !> `NODE <id> DOF <1-3>`: the internal node number and the component.
+   subroutine read_node_dof(reader, line, position, node, component, ok)
+      type(reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      integer, intent(out) :: node, component
+      logical, intent(inout) :: ok
+      integer :: id
+      node = 0
+      component = 0
+      call reader%expect_keyword(line, position, 'NODE', ok)
+      call reader%take_integer(line, position, 'a node id', id, ok)
+      if (ok) then
+         node = reader%node_map%lookup(id)
+         if (node == 0) then
+            ok = .false.
+            if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'undefined node '//to_string(id))
+         end if
+      end if
+      call reader%expect_keyword(line, position, 'DOF', ok)
+      call reader%take_integer(line, position, 'a DOF index', component, ok)
+      call require(reader, ok, component >= 1 .and. component <= 3, line, position - 1, &
+                   'DOF index out of range 1..3')
+   end subroutine read_node_dof
 
    !> Report `message` at token `position` unless `condition` holds (only if still `ok`).
    subroutine require(reader, ok, condition, line, position, message)
@@ -1847,10 +1859,15 @@ contains
       type(model_t), intent(inout) :: model
       type(step_t) :: step
       character(len=:), allocatable :: word
-      integer :: i, position, number, expected
+      integer :: i, position, number, expected, path_line, last_step_line
       logical :: ok
       allocate (model%steps(0))
       reader%step_lines = 0
+      path_line = 0
+      last_step_line = 0
+      do i = reader%first(s_steps), reader%last(s_steps)
+         if (reader%lines(i)%n_tokens() > 0) last_step_line = i
+      end do
       expected = 1
       do i = reader%first(s_steps), reader%last(s_steps)
          associate (line => reader%lines(i))
@@ -1866,6 +1883,9 @@ contains
             step%n_increments = 0
             step%max_iterations = 0
             step%control = 'LOAD'
+            step%path_node = 0
+            step%path_component = 0
+            step%path_target = 0.0_dp
             do while (ok .and. position <= line%n_tokens())
                select case (line%keyword(position))
                case ('NUMSTEP')
@@ -1879,8 +1899,11 @@ contains
                   select case (to_upper(word))
                   case ('LOAD', 'DISPLACEMENT')
                      step%control = to_upper(word)
+                  case ('PATH')
+                     step%control = 'PATH'
+                     call read_path_control(reader, model, line, position, number, step, ok)
                   case default
-                     call reader%report(line, position - 1, 'unknown CONTROL (expected Load or Displacement)')
+                     call reader%report(line, position - 1, 'unknown CONTROL (expected Load, Displacement or Path)')
                      ok = .false.
                   end select
                case ('MAXITER')
@@ -1897,9 +1920,87 @@ contains
                ok = .false.
             end if
             if (ok) model%steps = [model%steps, step]
+            if (ok .and. step%control == 'PATH') path_line = i
          end associate
       end do
+      ! the step ends where the driving node reaches its target, at a load factor not known
+      ! in advance: no step can follow it
+      if (path_line > 0 .and. path_line /= last_step_line) then
+         call reader%report(reader%lines(path_line), 1, &
+                            'CONTROL Path is allowed in the last step only (it ends at an unknown load factor)')
+      end if
    end subroutine read_steps
+
+   !> `CONTROL Path NODE <id> DOF <1-3> TARGET <value>` (after the word Path) of step `number`:
+   !> the driving displacement, which must be free (no Dirichlet condition on it), and loads
+   !> that change over the step while the prescribed displacements do not (the load factor is
+   !> the unknown that scales the former; the latter are held at their values).
+   subroutine read_path_control(reader, model, line, position, number, step, ok)
+      type(reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      integer, intent(in) :: number        !! the step's number
+      type(step_t), intent(inout) :: step
+      logical, intent(inout) :: ok
+      integer :: node_position, control_position, k
+      real(dp) :: start, finish
+      control_position = position - 1
+      node_position = position + 1
+      call read_node_dof(reader, line, position, step%path_node, step%path_component, ok)
+      call reader%expect_keyword(line, position, 'TARGET', ok)
+      call reader%take_real(line, position, 'TARGET (the displacement where the step ends)', step%path_target, ok)
+      if (.not. ok) return
+      do k = 1, size(model%dirichlet)
+         if (model%dirichlet(k)%component /= step%path_component) cycle
+         if (.not. any(model%dirichlet(k)%nodes == step%path_node)) cycle
+         call reader%report(line, node_position, 'this displacement is prescribed (DIRICHLET CONDITIONS, line '// &
+                            to_string(model%dirichlet(k)%line)//'): CONTROL Path needs a free one')
+         ok = .false.
+         return
+      end do
+      start = real(number - 1, dp)
+      finish = real(number, dp)
+      do k = 1, size(model%dirichlet)
+         if (model%dirichlet(k)%value == 0.0_dp) cycle
+         if (curve_factor(model, model%dirichlet(k)%curve, start) == &
+             curve_factor(model, model%dirichlet(k)%curve, finish)) cycle
+         call reader%report(line, control_position, 'the prescribed displacement of line '// &
+                            to_string(model%dirichlet(k)%line)//' changes during this step: CONTROL Path '// &
+                            'holds prescribed displacements at their values')
+         ok = .false.
+         return
+      end do
+      if (.not. loads_change(model, start, finish)) then
+         call reader%report(line, control_position, 'no load changes during this step: CONTROL Path '// &
+                            'scales the step''s load change by the unknown load factor')
+         ok = .false.
+      end if
+   end subroutine read_path_control
+
+   !> Whether a nodal force, pressure or body force has a different factor at `start` and
+   !> `finish`.
+   logical function loads_change(model, start, finish) result(changes)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: start, finish
+      integer :: k
+      changes = .false.
+      do k = 1, size(model%nodal_forces)
+         if (model%nodal_forces(k)%value /= 0.0_dp) changes = changes .or. &
+            curve_factor(model, model%nodal_forces(k)%curve, start) /= &
+            curve_factor(model, model%nodal_forces(k)%curve, finish)
+      end do
+      do k = 1, size(model%pressures)
+         if (model%pressures(k)%value /= 0.0_dp) changes = changes .or. &
+            curve_factor(model, model%pressures(k)%curve, start) /= &
+            curve_factor(model, model%pressures(k)%curve, finish)
+      end do
+      do k = 1, size(model%body_forces)
+         if (any(model%body_forces(k)%gravity /= 0.0_dp)) changes = changes .or. &
+            curve_factor(model, model%body_forces(k)%curve, start) /= &
+            curve_factor(model, model%body_forces(k)%curve, finish)
+      end do
+   end function loads_change
 
    ! ---- checks of the whole model --------------------------------------------------------
 

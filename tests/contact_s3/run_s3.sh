@@ -1,10 +1,14 @@
 #!/bin/bash
 # S3 elastic punch on a foundation (docs/verification/s3.md): run one deck and check it.
 # usage: run_s3.sh FRIX DECK CENTRE_NODE MU [--reference FILE]
-# Exit 0 if the run reaches the full load, is in equilibrium and (with --reference) matches
-# the stored frix value and the mu = 0.5 displacement within the stored tolerance.
+#        run_s3.sh FRIX DECK --path-limit
+# Load control: exit 0 if the run reaches the full load, is in equilibrium and (with
+# --reference) matches the stored frix value and the mu = 0.5 displacement within the stored
+# tolerance (check_s3.py).
+# --path-limit (a CONTROL Path deck past the frictionless limit point): exit 0 if the run ends
+# at its target displacement and passes the limit point (check_s3_path.py).
 set -u
-frix=$1; deck=$2; centre=$3; mu=$4; shift 4
+frix=$1; deck=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 base=$(basename "$deck" .dck)
 out=$(mktemp -d "${TMPDIR:-/tmp}/s3_${base}_XXXXXX")
@@ -16,7 +20,16 @@ echo "run_s3.sh: $base: frix exit status $status, $(( $(date +%s) - start )) s"
 grep -E "converged in|cut-back" "$out/run.log" | cut -c1-160
 if [ $status -ne 0 ]; then
    grep -E "^frix: step|failed" "$out/run.log" | cut -c1-400
-   echo "run_s3.sh: FAIL: $base did not converge to the full load"
+   echo "run_s3.sh: FAIL: $base did not run to its end"
    exit 1
 fi
+if [ "$1" = "--path-limit" ]; then
+   if ! grep -q 'reached its target' "$out/run.log"; then
+      echo "run_s3.sh: FAIL: $base did not reach its target displacement"
+      exit 1
+   fi
+   /usr/bin/python3 "$here/check_s3_path.py" "$out/${base}_history.csv"
+   exit $?
+fi
+centre=$1; mu=$2; shift 2
 /usr/bin/python3 "$here/check_s3.py" "$out" "$base" "$centre" "$mu" --summary "$@"

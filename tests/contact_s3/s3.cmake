@@ -19,6 +19,12 @@ foreach(mu 0.5 0.1 0.25)
 endforeach()
 set_tests_properties(contact_s3_coarse_mu0.1 PROPERTIES DISABLED TRUE)
 
+# Without friction the coarse model has a limit point at t = 0.6106: path following (CONTROL
+# Path on the punch corner's z displacement) passes it and ends on the falling branch (25 s).
+add_test(NAME contact_s3_coarse_mu0_path
+         COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0_path.dck --path-limit)
+set_tests_properties(contact_s3_coarse_mu0_path PROPERTIES LABELS "regression;contact" TIMEOUT 300)
+
 # Reduced penalties (EPSN 1e6, EPST 1e4), coarse mesh: regression against the stored frix
 # value of each mu and the mu-independence of the displacement.
 foreach(mu 0.5 0.1 0.25)
