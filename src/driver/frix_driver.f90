@@ -23,7 +23,7 @@ module frix_driver
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
                                   restore_state
    use frix_newton_solver, only: newton_context_t, newton_report_t, path_constraint_t, setup_newton, &
-                                 solve_increment
+                                 solve_increment, equation_label
    use frix_results_output, only: results_output_t
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
@@ -208,8 +208,8 @@ contains
             if ((path%target - model%steps(step)%path_target)*path_increment > 0.0_dp) &
                path%target = model%steps(step)%path_target
             attempted = 'the increment from t = '//time_text(state%committed_time)//' moving '// &
-                        driven_label(model, step)//' from '//time_text(state%committed_u(path%equation))// &
-                        ' to '//time_text(path%target)
+                        'the displacement at '//equation_label(model, path%equation)//' from '// &
+                        time_text(state%committed_u(path%equation))//' to '//time_text(path%target)
             call solve_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
                                  report, error, path)
             if (allocated(error)) return
@@ -259,7 +259,8 @@ contains
       end do
       if (path_control .and. .not. quiet .and. state%committed_time < step_end - 1.0e-12_dp) &
          write (*, '(a)') 'frix: step '//to_string(step)//' ends at t = '//time_text(state%committed_time)// &
-         ': '//driven_label(model, step)//' reached its target '//time_text(model%steps(step)%path_target)
+         ': the displacement at '//equation_label(model, path%equation)//' reached its target '// &
+         time_text(model%steps(step)%path_target)
    end subroutine run_step
 
    !> Whether the driving displacement of a CONTROL Path step is at its target (to round-off).
@@ -269,15 +270,6 @@ contains
       reached = abs(displacement - step%path_target) <= 1.0e-12_dp*max(1.0_dp, abs(step%path_target))
    end function path_target_reached
 
-   !> 'the displacement of node <id> in direction x|y|z' of a CONTROL Path step.
-   function driven_label(model, step) result(text)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: step
-      character(len=:), allocatable :: text
-      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
-      text = 'the displacement of node '//to_string(model%mesh%node_ids(model%steps(step)%path_node))// &
-             ' in '//direction(model%steps(step)%path_component)
-   end function driven_label
 
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
    !> file of an earlier run of the same model, and say where the run continues: the step

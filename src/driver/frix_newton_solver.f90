@@ -34,6 +34,7 @@ module frix_newton_solver
    private
 
    public :: newton_context_t, newton_report_t, path_constraint_t, setup_newton, solve_increment
+   public :: equation_label
 
    !> The constraint of a path-following increment (see the module head).
    type :: path_constraint_t
