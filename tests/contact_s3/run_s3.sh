@@ -1,12 +1,12 @@
 #!/bin/bash
 # S3 elastic punch on a foundation (docs/verification/s3.md): run one deck and check it.
 # usage: run_s3.sh FRIX DECK CENTRE_NODE MU [--reference FILE]
-#        run_s3.sh FRIX DECK --path-limit
+#        run_s3.sh FRIX DECK --path-limit LIMIT
 # Load control: exit 0 if the run reaches the full load, is in equilibrium and (with
 # --reference) matches the stored frix value and the mu = 0.5 displacement within the stored
 # tolerance (check_s3.py).
-# --path-limit (a CONTROL Path deck past the frictionless limit point): exit 0 if the run ends
-# at its target displacement and passes the limit point (check_s3_path.py).
+# --path-limit LIMIT (a CONTROL Path deck past a limit point): exit 0 if the run ends at its
+# target displacement and passes the limit point near LIMIT (check_s3_path.py).
 set -u
 frix=$1; deck=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
@@ -28,7 +28,7 @@ if [ "$1" = "--path-limit" ]; then
       echo "run_s3.sh: FAIL: $base did not reach its target displacement"
       exit 1
    fi
-   /usr/bin/python3 "$here/check_s3_path.py" "$out/${base}_history.csv"
+   /usr/bin/python3 "$here/check_s3_path.py" "$out/${base}_history.csv" "$2"
    exit $?
 fi
 centre=$1; mu=$2; shift 2
