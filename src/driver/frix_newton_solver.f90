@@ -58,8 +58,9 @@ module frix_newton_solver
       real(dp), allocatable :: diagonal(:)  !! diagonal of the tangent just assembled
       real(dp), allocatable :: load_rate(:)      !! path following: q = d fext / dt
       real(dp), allocatable :: load_response(:)  !! path following: b = K^-1 q
-      logical :: path_following = .false.        !! in a path-following increment
-      real(dp) :: step_window(2) = [0.0_dp, 1.0_dp]  !! its step's pseudo times (loads linear in t)
+      !> in a path-following increment: its step's pseudo times (loads linear in t between
+      !> them); unallocated otherwise (then an absent argument of assemble_external)
+      real(dp), allocatable :: step_window(:)
       logical :: quiet = .false.
       logical :: has_contact = .false.
       type(contact_system_t) :: contact     !! contact search, slip history, contact assembly
@@ -146,7 +147,7 @@ contains
 
       current_time = time
       state%time = time
-      context%path_following = present(path)
+      if (allocated(context%step_window)) deallocate (context%step_window)
       if (present(path)) context%step_window = [path%step_start, path%step_end]
       context%use_fallback = .false.
       if (context%has_contact) call reset_friction_branches(context%contact)
@@ -334,19 +335,11 @@ contains
       if (with_tangent) then
          if (context%has_contact) &
             call assemble_contact(model, context%contact, state%u, context%fint, context%matrix, predictor)
-         if (context%path_following) then
-            call assemble_external(model, time, state%u, context%fext, matrix=context%matrix, &
-                                   step_window=context%step_window)
-         else
-            call assemble_external(model, time, state%u, context%fext, matrix=context%matrix)
-         end if
+         call assemble_external(model, time, state%u, context%fext, matrix=context%matrix, &
+                                step_window=context%step_window)
       else
          if (context%has_contact) call assemble_contact(model, context%contact, state%u, context%fint)
-         if (context%path_following) then
-            call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
-         else
-            call assemble_external(model, time, state%u, context%fext)
-         end if
+         call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
       context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
       context%n_assemblies = context%n_assemblies + 1
