@@ -26,7 +26,7 @@ add_test(NAME contact_s3_coarse_mu0_path
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0_path.dck --path-limit 0.61067)
 set_tests_properties(contact_s3_coarse_mu0_path PROPERTIES LABELS "regression;contact" TIMEOUT 300)
 # With mu = 0.1 the maximum is t = 0.7919, below the full load: why contact_s3_coarse_mu0.1
-# cannot pass (14 min: slow).
+# cannot pass (11 min: slow).
 add_test(NAME contact_s3_coarse_mu0.1_path
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.1_path.dck --path-limit 0.7917)
 set_tests_properties(contact_s3_coarse_mu0.1_path PROPERTIES LABELS "regression;contact;slow" TIMEOUT 3600)
