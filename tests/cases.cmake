@@ -48,8 +48,13 @@ add_test(NAME solver_path_following_limit_point
 add_test(NAME solver_path_following_landing
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_following_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_path_landing.dck 150 lands)
+# A target within the displacement tolerance of the start: the step ends after NUMSTEP
+# increments (it repeated increments that did not move before the review of 2026-11-23).
+add_test(NAME solver_path_following_target_near_start
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_following_check.sh ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_target_near_start.dck 250 near)
 set_tests_properties(solver_path_following_limit_point solver_path_following_landing
-                     PROPERTIES LABELS regression)
+                     solver_path_following_target_near_start PROPERTIES LABELS regression TIMEOUT 60)
 
 # POS3D neutral file: writer checks on synthetic data, and a run read back independently.
 add_executable(pos3d_writer_check ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_writer_check.f90)

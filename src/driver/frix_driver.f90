@@ -18,7 +18,7 @@ module frix_driver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
-   use frix_model, only: model_t, step_t
+   use frix_model, only: model_t
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
                                   restore_state
@@ -178,8 +178,8 @@ contains
       real(dp) :: smallest, increment_start, previous_time
       character(len=64) :: label
       character(len=:), allocatable :: attempted
-      type(path_constraint_t) :: path
-      logical :: path_control, landing
+      type(path_constraint_t) :: path, landing_path
+      logical :: path_control, landing, final_increment, target_reached
       real(dp) :: path_increment   !! driven displacement per nominal increment [length]
 
       step_end = real(step, dp)
@@ -197,16 +197,20 @@ contains
          path%step_end = step_end
          path_increment = (model%steps(step)%path_target - state%committed_u(path%equation))/ &
                           model%steps(step)%n_increments
+         landing_path = path
+         landing_path%equation = 0   ! load control at the step's end, with the step's loads
       end if
-      do while (state%committed_time < step_end - 1.0e-12_dp)
+      final_increment = .false.
+      target_reached = .false.
+      do while (state%committed_time < step_end - 1.0e-12_dp .and. .not. target_reached)
          write (label, '("step",i3,"  incr",i4)') step, increment + 1
          increment_start = wall_clock_seconds()
          previous_time = state%committed_time
          if (path_control .and. .not. landing) then
-            if (path_target_reached(model%steps(step), state%committed_u(path%equation))) exit
             path%target = state%committed_u(path%equation) + path_increment*size_now/nominal
-            if ((path%target - model%steps(step)%path_target)*path_increment > 0.0_dp) &
-               path%target = model%steps(step)%path_target
+            ! the increment that reaches (or would pass) TARGET ends on it and ends the step
+            final_increment = (path%target - model%steps(step)%path_target)*path_increment >= 0.0_dp
+            if (final_increment) path%target = model%steps(step)%path_target
             attempted = 'the increment from t = '//time_text(state%committed_time)//' moving '// &
                         'the displacement at '//equation_label(model, path%equation)//' from '// &
                         time_text(state%committed_u(path%equation))//' to '//time_text(path%target)
@@ -226,12 +230,18 @@ contains
             target_time = min(state%committed_time + size_now, step_end)
             if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
             attempted = 'the increment from t = '//time_text(state%committed_time)//' to t = '//time_text(target_time)
-            call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                 report, error)
+            if (landing) then
+               call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
+                                    report, error, landing_path)
+            else
+               call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
+                                    report, error)
+            end if
             if (allocated(error)) return
          end if
          if (report%converged) then
             increment = increment + 1
+            target_reached = path_control .and. .not. landing .and. final_increment
             call commit_state(state)
             if (context%has_contact) call commit_contact(context%contact)
             call output%write_increment(model, step, increment, state, context, report, error)
@@ -257,18 +267,11 @@ contains
                time_text(size_now)
          end if
       end do
-      if (path_control .and. .not. quiet .and. state%committed_time < step_end - 1.0e-12_dp) &
+      if (target_reached .and. .not. quiet) &
          write (*, '(a)') 'frix: step '//to_string(step)//' ends at t = '//time_text(state%committed_time)// &
          ': the displacement at '//equation_label(model, path%equation)//' reached its target '// &
          time_text(model%steps(step)%path_target)
    end subroutine run_step
-
-   !> Whether the driving displacement of a CONTROL Path step is at its target (to round-off).
-   pure logical function path_target_reached(step, displacement) result(reached)
-      type(step_t), intent(in) :: step
-      real(dp), intent(in) :: displacement
-      reached = abs(displacement - step%path_target) <= 1.0e-12_dp*max(1.0_dp, abs(step%path_target))
-   end function path_target_reached
 
 
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5

@@ -36,7 +36,10 @@ module frix_newton_solver
    public :: newton_context_t, newton_report_t, path_constraint_t, setup_newton, solve_increment
    public :: equation_label
 
-   !> The constraint of a path-following increment (see the module head).
+   !> An increment of a path-following step (see the module head): its constraint, and the
+   !> step's pseudo times over which its loads are linear in t. With equation = 0 the
+   !> increment is load-controlled at the given t, with the step's loads (the landing on the
+   !> step's end).
    type :: path_constraint_t
       integer :: equation = 0           !! the driven global equation (node-major, 3 per node)
       real(dp) :: target = 0.0_dp       !! its displacement at the end of the increment [length]
@@ -124,10 +127,12 @@ contains
                 source=0.0_dp)
    end subroutine setup_newton
 
-   !> Iterate from the committed state to equilibrium at pseudo time `time`, or, with `path`,
-   !> to equilibrium on the constraint u_c = path%target with the pseudo time an unknown that
-   !> starts from `time`. On return state holds the last iterate (converged or not) and its
-   !> pseudo time; the caller commits or restores. `error` is set only for failures that a
+   !> Iterate from the committed state to equilibrium at pseudo time `time`, or, with `path`
+   !> (path%equation > 0), to equilibrium on the constraint u_c = path%target with the pseudo
+   !> time an unknown that starts from `time`; with `path`, the loads are linear in t over the
+   !> step and the prescribed displacements are held at their value at the step's end (equal to
+   !> that at its start: the deck reader checks it). On return state holds the last iterate
+   !> (converged or not) and its pseudo time; the caller commits or restores. `error` is set only for failures that a
    !> smaller increment cannot cure (a singular matrix at the first iteration, a solver
    !> failure); non-convergence is reported in `report` instead.
    subroutine solve_increment(model, context, state, time, max_iterations, label, report, error, path)
@@ -148,10 +153,14 @@ contains
       current_time = time
       state%time = time
       if (allocated(context%step_window)) deallocate (context%step_window)
-      if (present(path)) context%step_window = [path%step_start, path%step_end]
       context%use_fallback = .false.
       if (context%has_contact) call reset_friction_branches(context%contact)
-      call prescribed_displacements(model, time, context%fixed, context%prescribed)
+      if (present(path)) then
+         context%step_window = [path%step_start, path%step_end]
+         call prescribed_displacements(model, path%step_end, context%fixed, context%prescribed)
+      else
+         call prescribed_displacements(model, time, context%fixed, context%prescribed)
+      end if
       where (context%fixed) state%u = context%prescribed
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
@@ -182,7 +191,7 @@ contains
          u_norm = norm2(state%u)
          if (residual_norm <= max(model%controls%tol_residual*reference, &
                                   roundoff_floor(model, context, state%u)) .and. &
-             on_path(model, state, path)) then
+             on_path(model, state, path, iteration)) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
                if (.not. context%has_contact) then
@@ -215,7 +224,7 @@ contains
          end if
          ! (path following starts from an equilibrium state: no reference to diverge from)
          if (iteration > 0 .and. residual_norm > divergence_factor*report%residual_norms(0) .and. &
-             report%residual_norms(0) > 0.0_dp .and. .not. present(path)) then
+             report%residual_norms(0) > 0.0_dp .and. .not. driving(path)) then
             report%failure = 'the iterations diverge'//worst_entries(model, context)
             return
          end if
@@ -235,7 +244,7 @@ contains
          end if
          where (context%fixed) context%correction = 0.0_dp
          time_correction = 0.0_dp
-         if (present(path)) then
+         if (driving(path)) then
             call path_correction(model, context, state, path, time_correction, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
@@ -290,15 +299,26 @@ contains
    end subroutine path_correction
 
    !> Whether the driven displacement of a path-following increment is at its target, within
-   !> the displacement tolerance (TOLDISP ||u||); always true without a path.
-   logical function on_path(model, state, path)
+   !> the displacement tolerance (TOLDISP ||u||), after at least one correction (an increment
+   !> whose target lies within that tolerance of its start must still move onto it, or the
+   !> step would repeat it); always true without a driven displacement.
+   logical function on_path(model, state, path, iteration)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(in) :: state
       type(path_constraint_t), intent(in), optional :: path
+      integer, intent(in) :: iteration
       on_path = .true.
-      if (.not. present(path)) return
-      on_path = abs(state%u(path%equation) - path%target) <= model%controls%tol_displacement*norm2(state%u)
+      if (.not. driving(path)) return
+      on_path = iteration > 0 .and. &
+                abs(state%u(path%equation) - path%target) <= model%controls%tol_displacement*norm2(state%u)
    end function on_path
+
+   !> Whether the increment drives a displacement (path following proper).
+   logical function driving(path)
+      type(path_constraint_t), intent(in), optional :: path
+      driving = .false.
+      if (present(path)) driving = path%equation > 0
+   end function driving
 
    !> Internal, contact and external forces at state%u: the residual r = fext - fint on the
    !> free equations, the reactions on the constrained ones, ||r|| and the reference

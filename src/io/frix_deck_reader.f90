@@ -1859,11 +1859,10 @@ contains
       type(model_t), intent(inout) :: model
       type(step_t) :: step
       character(len=:), allocatable :: word
-      integer :: i, position, number, expected, path_line, last_step_line
+      integer :: i, position, number, expected, last_step_line
       logical :: ok
       allocate (model%steps(0))
       reader%step_lines = 0
-      path_line = 0
       last_step_line = 0
       do i = reader%first(s_steps), reader%last(s_steps)
          if (reader%lines(i)%n_tokens() > 0) last_step_line = i
@@ -1919,16 +1918,16 @@ contains
                call reader%report(line, line%n_tokens() + 1, 'missing NUMSTEP')
                ok = .false.
             end if
+            ! a Path step ends where the driving node reaches its target, at a load factor not
+            ! known in advance: no step can follow it
+            if (ok .and. step%control == 'PATH' .and. i /= last_step_line) then
+               call reader%report(line, 1, &
+                                  'CONTROL Path is allowed in the last step only (it ends at an unknown load factor)')
+               ok = .false.
+            end if
             if (ok) model%steps = [model%steps, step]
-            if (ok .and. step%control == 'PATH') path_line = i
          end associate
       end do
-      ! the step ends where the driving node reaches its target, at a load factor not known
-      ! in advance: no step can follow it
-      if (path_line > 0 .and. path_line /= last_step_line) then
-         call reader%report(reader%lines(path_line), 1, &
-                            'CONTROL Path is allowed in the last step only (it ends at an unknown load factor)')
-      end if
    end subroutine read_steps
 
    !> `CONTROL Path NODE <id> DOF <1-3> TARGET <value>` (after the word Path) of step `number`:
@@ -1951,6 +1950,12 @@ contains
       call reader%expect_keyword(line, position, 'TARGET', ok)
       call reader%take_real(line, position, 'TARGET (the displacement where the step ends)', step%path_target, ok)
       if (.not. ok) return
+      if (.not. any(model%mesh%connectivity == step%path_node)) then
+         call reader%report(line, node_position, 'this node belongs to no element (it is held fixed): '// &
+                            'CONTROL Path needs a free displacement')
+         ok = .false.
+         return
+      end if
       do k = 1, size(model%dirichlet)
          if (model%dirichlet(k)%component /= step%path_component) cycle
          if (.not. any(model%dirichlet(k)%nodes == step%path_node)) cycle
