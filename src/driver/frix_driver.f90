@@ -273,7 +273,6 @@ contains
          time_text(model%steps(step)%path_target)
    end subroutine run_step
 
-
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
    !> file of an earlier run of the same model, and say where the run continues: the step
    !> holding that increment (or the next step if the increment ended its step).
@@ -377,16 +376,14 @@ contains
       integer, intent(in) :: iterations
       real(dp) :: left, end_time
       end_time = real(size(model%steps), dp)
-      if (time <= previous_time) then   ! path following past a limit point: the load decreases
-         write (*, '(2x,"converged in",i3," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
-                '" (",f5.1," %)")') iterations, seconds, time, end_time, 100.0_dp*time/end_time
-         flush (6)
-         return
-      end if
-      left = seconds*(end_time - time)/(time - previous_time)
       write (*, '(2x,"converged in",i3," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
-             '" (",f5.1," %),  about",f10.1," s left")') iterations, seconds, time, end_time, &
-         100.0_dp*time/end_time, left
+             '" (",f5.1," %)")', advance='no') iterations, seconds, time, end_time, 100.0_dp*time/end_time
+      ! no estimate when the load factor decreased (path following past a limit point)
+      if (time > previous_time) then
+         left = seconds*(end_time - time)/(time - previous_time)
+         write (*, '(",  about",f10.1," s left")', advance='no') left
+      end if
+      write (*, '(a)') ''
       flush (6)
    end subroutine print_increment_done
 

@@ -132,9 +132,9 @@ contains
    !> time an unknown that starts from `time`; with `path`, the loads are linear in t over the
    !> step and the prescribed displacements are held at their value at the step's end (equal to
    !> that at its start: the deck reader checks it). On return state holds the last iterate
-   !> (converged or not) and its pseudo time; the caller commits or restores. `error` is set only for failures that a
-   !> smaller increment cannot cure (a singular matrix at the first iteration, a solver
-   !> failure); non-convergence is reported in `report` instead.
+   !> (converged or not) and its pseudo time; the caller commits or restores. `error` is set
+   !> only for failures that a smaller increment cannot cure (a singular matrix at the first
+   !> iteration, a solver failure); non-convergence is reported in `report` instead.
    subroutine solve_increment(model, context, state, time, max_iterations, label, report, error, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
@@ -191,7 +191,7 @@ contains
          u_norm = norm2(state%u)
          if (residual_norm <= max(model%controls%tol_residual*reference, &
                                   roundoff_floor(model, context, state%u)) .and. &
-             on_path(model, state, path, iteration)) then
+             on_path(model, state, path, iteration, u_norm)) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
                if (.not. context%has_contact) then
@@ -281,11 +281,7 @@ contains
       call assemble_external(model, path%step_start, state%u, context%load_response)
       context%load_rate = (context%load_rate - context%load_response)/(path%step_end - path%step_start)
       where (context%fixed) context%load_rate = 0.0_dp
-      if (context%use_fallback) then
-         call context%fallback%solve(context%matrix, context%load_rate, context%load_response, error)
-      else
-         call context%solver%solve(context%matrix, context%load_rate, context%load_response, error)
-      end if
+      call solve_factorized(context, context%load_rate, context%load_response, error)
       if (allocated(error)) return
       where (context%fixed) context%load_response = 0.0_dp
       response = context%load_response(path%equation)
@@ -302,15 +298,16 @@ contains
    !> the displacement tolerance (TOLDISP ||u||), after at least one correction (an increment
    !> whose target lies within that tolerance of its start must still move onto it, or the
    !> step would repeat it); always true without a driven displacement.
-   logical function on_path(model, state, path, iteration)
+   logical function on_path(model, state, path, iteration, u_norm)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(in) :: state
       type(path_constraint_t), intent(in), optional :: path
       integer, intent(in) :: iteration
+      real(dp), intent(in) :: u_norm   !! ||u|| of the iterate
       on_path = .true.
       if (.not. driving(path)) return
       on_path = iteration > 0 .and. &
-                abs(state%u(path%equation) - path%target) <= model%controls%tol_displacement*norm2(state%u)
+                abs(state%u(path%equation) - path%target) <= model%controls%tol_displacement*u_norm
    end function on_path
 
    !> Whether the increment drives a displacement (path following proper).
@@ -489,7 +486,7 @@ contains
       if (.not. context%use_fallback) then
          call context%solver%factorize(context%matrix, error)
          if (.not. allocated(error)) then
-            call context%solver%solve(context%matrix, context%residual, context%correction, error)
+            call solve_factorized(context, context%residual, context%correction, error)
             return
          end if
          if (context%solver%name() /= 'CHOLMOD') then
@@ -508,8 +505,22 @@ contains
          call describe_singularity(model, context%fallback%failed_equation, error)
          return
       end if
-      call context%fallback%solve(context%matrix, context%residual, context%correction, error)
+      call solve_factorized(context, context%residual, context%correction, error)
    end subroutine factorize_and_solve
+
+   !> x = K^-1 rhs with the factorization of this iteration (CHOLMOD's, or UMFPACK's after a
+   !> fallback).
+   subroutine solve_factorized(context, rhs, x, error)
+      type(newton_context_t), intent(inout) :: context
+      real(dp), intent(in) :: rhs(:)
+      real(dp), intent(out) :: x(:)
+      type(error_t), allocatable, intent(out) :: error
+      if (context%use_fallback) then
+         call context%fallback%solve(context%matrix, rhs, x, error)
+      else
+         call context%solver%solve(context%matrix, rhs, x, error)
+      end if
+   end subroutine solve_factorized
 
    !> Name the node and direction where the factorization broke down.
    subroutine describe_singularity(model, equation, error)

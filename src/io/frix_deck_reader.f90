@@ -1879,12 +1879,7 @@ contains
             call require(reader, ok, number == expected, line, position - 1, &
                          'steps must be numbered 1, 2, ... in order: expected step '//to_string(expected))
             expected = expected + 1
-            step%n_increments = 0
-            step%max_iterations = 0
-            step%control = 'LOAD'
-            step%path_node = 0
-            step%path_component = 0
-            step%path_target = 0.0_dp
+            step = step_t(n_increments=0, control='LOAD')   ! n_increments 0: NUMSTEP missing
             do while (ok .and. position <= line%n_tokens())
                select case (line%keyword(position))
                case ('NUMSTEP')
