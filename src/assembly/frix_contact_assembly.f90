@@ -72,6 +72,9 @@ module frix_contact_assembly
       integer, allocatable :: extra_pairs(:, :)   !! (2, n) node pairs added to the sparse pattern
       integer :: n_extra = 0
       logical :: frictional = .false.             !! some pair has friction: unsymmetric tangent
+      !> factor on the pressure every friction law sees, i.e. on mu for Coulomb; 1 except in
+      !> the stages of the driver's friction continuation
+      real(dp) :: friction_scale = 1.0_dp
    end type contact_system_t
 
    !> Columns of `contact_pass_table` (listing, CSV).
@@ -414,7 +417,8 @@ contains
                   do attempt = 1, 2
                      call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
                                              pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
-                                             pass%result(i), force3, tangent3, branch=pass%branch(i))
+                                             pass%result(i), force3, tangent3, branch=pass%branch(i), &
+                                             friction_scale=system%friction_scale)
                      if (.not. present(matrix)) exit
                      if (.not. slip_reversed(pass, i)) exit
                   end do
@@ -440,11 +444,12 @@ contains
                      ! the node moved off its anchor's face: the anchor stays a point of that face
                      call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
                                             pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
-                                            x_anchor_face=current_face(model, u, nodes(6:9)), branch=pass%branch(i))
+                                            x_anchor_face=current_face(model, u, nodes(6:9)), branch=pass%branch(i), &
+                                            friction_scale=system%friction_scale)
                   else
                      call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
                                             pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
-                                            branch=pass%branch(i))
+                                            branch=pass%branch(i), friction_scale=system%friction_scale)
                   end if
                   if (.not. present(matrix)) exit
                   if (.not. slip_reversed(pass, i)) exit

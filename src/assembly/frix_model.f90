@@ -88,6 +88,11 @@ module frix_model
       integer :: max_cutbacks = 6              !! halvings of an increment before giving up
       integer :: linear_solver = solver_auto
       integer :: default_kinematics = kinematics_linear
+      !> MU_CONTINUATION f_1 > f_2 > ... > f_m > 1: after a failed increment on a model with
+      !> frictional contact, solve it again with the friction coefficients scaled by f_1, ..., f_m
+      !> and finally 1, each stage starting from the previous one's solution (frix_driver).
+      !> Empty: no continuation.
+      real(dp), allocatable :: friction_continuation(:)
    end type solver_controls_t
 
    !> One column of the CSV history: displacement ('U') or reaction ('R') of a node's DOF.

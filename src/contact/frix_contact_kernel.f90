@@ -88,7 +88,7 @@ contains
    !> caller should try the neighbouring face); with `clamp` the closest point of the bounded
    !> face (on an edge or a corner) and the face normal there are used.
    subroutine node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                result, fint, tangent, x_anchor_face, branch)
+                                result, fint, tangent, x_anchor_face, branch, friction_scale)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)      !! current slave position X + u
       real(dp), intent(in) :: x_master(3, 4)  !! current master face nodes, outward (HEX8 face) order
@@ -107,6 +107,9 @@ contains
       !> friction branch to evaluate in contact (frix_friction_law: branch_free (default),
       !> branch_stick, branch_slip)
       integer, intent(in), optional :: branch
+      !> factor f on the pressure the friction law sees (default 1): the slip threshold becomes
+      !> f mu p_N, i.e. Coulomb with f mu (frix_driver's friction continuation)
+      real(dp), intent(in), optional :: friction_scale
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
       real(dp) :: xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
@@ -199,7 +202,7 @@ contains
          if (.not. has_anchor) anchor_point = xs - gap*normal   ! the foot: g_T = 0 identically
          relative = xs - anchor_point
          call friction_response(parameters, relative, normal, pressure, used_branch, traction, slipping, &
-                                result%law_status)
+                                result%law_status, friction_scale)
          if (slipping) then
             result%status = contact_slip
             target = x_slave - result%gap*result%normal + traction%value/parameters%tangential_penalty
@@ -235,7 +238,7 @@ contains
    !> fint = -A_s (p_N n + t) and tangent = d fint / d u_s (3 x 3). For an open node the new
    !> anchor is the foot point.
    subroutine node_plane_contact(parameters, x_slave, plane_point, plane_normal, area, anchor, has_anchor, &
-                                 result, fint, tangent, branch)
+                                 result, fint, tangent, branch, friction_scale)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)       !! current slave position X + u
       real(dp), intent(in) :: plane_point(3)   !! a point P of the plane
@@ -247,6 +250,7 @@ contains
       real(dp), intent(out) :: fint(3)         !! internal force contribution (force)
       real(dp), intent(out) :: tangent(3, 3)   !! d fint / d u_s (force/length)
       integer, intent(in), optional :: branch  !! friction branch, as for node_face_contact
+      real(dp), intent(in), optional :: friction_scale  !! as for node_face_contact
       type(dual_t) :: xs(3), gap, pressure, relative(3), traction(3), force(3)
       real(dp) :: normal(3), foot(3), used_anchor(3)
       logical :: slipping
@@ -282,7 +286,7 @@ contains
             relative = gap*normal   ! anchor at the foot: g_T = 0 identically
          end if
          call friction_response(parameters, relative, dual_constant(normal), pressure, used_branch, traction, &
-                                slipping, result%law_status)
+                                slipping, result%law_status, friction_scale)
          if (slipping) then
             result%status = contact_slip
             result%new_anchor = foot + traction%value/parameters%tangential_penalty
@@ -306,17 +310,22 @@ contains
    !> anchor; force/area) and its return mapping on friction branch `branch`: the traction,
    !> whether the slip branch was evaluated, and the status the law itself chooses.
    pure subroutine friction_response(parameters, relative, normal, pressure, branch, traction, slipping, &
-                                     law_status)
+                                     law_status, friction_scale)
       type(contact_parameters_t), intent(in) :: parameters
       type(dual_t), intent(in) :: relative(3), normal(3), pressure
       integer, intent(in) :: branch
       type(dual_t), intent(out) :: traction(3)
       logical, intent(out) :: slipping
       integer, intent(out) :: law_status
+      real(dp), intent(in), optional :: friction_scale  !! as for node_face_contact
       type(dual_t) :: trial(3)
       logical :: law_slipping
       trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, normal)*normal)
-      call parameters%friction%return_map(trial, pressure, branch, traction, slipping, law_slipping)
+      if (present(friction_scale)) then
+         call parameters%friction%return_map(trial, friction_scale*pressure, branch, traction, slipping, law_slipping)
+      else
+         call parameters%friction%return_map(trial, pressure, branch, traction, slipping, law_slipping)
+      end if
       law_status = merge(contact_slip, contact_stick, law_slipping)
    end subroutine friction_response
 

@@ -116,6 +116,8 @@ contains
       write (*, '(a,t40,i12)') 'frix: stat assemblies', context%n_assemblies
       if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat line_search_trials', context%n_line_search_trials
       if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat stick_releases', context%n_releases
+      if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat friction_continuations', &
+         context%n_continuations
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
       analyse = context%solver%analyse_seconds
@@ -174,7 +176,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(newton_report_t) :: report
       real(dp) :: step_end, nominal, size_now, target_time
-      integer :: increment, max_iterations
+      integer :: increment, max_iterations, iterations
       real(dp) :: smallest, increment_start, previous_time
       character(len=64) :: label
       character(len=:), allocatable :: attempted
@@ -214,8 +216,8 @@ contains
             attempted = 'the increment from t = '//time_text(state%committed_time)//' moving '// &
                         'the displacement at '//equation_label(model, path%equation)//' from '// &
                         time_text(state%committed_u(path%equation))//' to '//time_text(path%target)
-            call solve_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
-                                 report, error, path)
+            call attempt_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
+                                   quiet, report, iterations, error, path)
             if (allocated(error)) return
             if (report%converged .and. state%time > step_end) then
                ! past the step's end: land on it under load control
@@ -231,11 +233,11 @@ contains
             if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
             attempted = 'the increment from t = '//time_text(state%committed_time)//' to t = '//time_text(target_time)
             if (landing) then
-               call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                    report, error, landing_path)
+               call attempt_increment(model, context, state, target_time, max_iterations, trim(label), &
+                                      quiet, report, iterations, error, landing_path)
             else
-               call solve_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                    report, error)
+               call attempt_increment(model, context, state, target_time, max_iterations, trim(label), &
+                                      quiet, report, iterations, error)
             end if
             if (allocated(error)) return
          end if
@@ -248,8 +250,8 @@ contains
             if (allocated(error)) return
             if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
                                                        wall_clock_seconds() - increment_start, &
-                                                       report%iterations)
-            if (size_now < nominal .and. report%iterations <= max_iterations/3) &
+                                                       iterations)
+            if (size_now < nominal .and. iterations <= max_iterations/3) &
                size_now = min(nominal, growth_factor*size_now)
          else
             call restore_state(state)
@@ -272,6 +274,61 @@ contains
          ': the displacement at '//equation_label(model, path%equation)//' reached its target '// &
          time_text(model%steps(step)%path_target)
    end subroutine run_step
+
+   !> Solve one increment (solve_increment's arguments), with the friction continuation of
+   !> MU_CONTINUATION f_1 > ... > f_m > 1 if that fails on a model with frictional contact: a
+   !> homotopy in the friction coefficient within the increment. From the committed state, the
+   !> increment is solved with every friction law seeing the pressure f_k p_N (Coulomb: the
+   !> coefficient f_k mu), k = 1 .. m, and finally with f = 1, each stage's Newton iterations
+   !> starting from the previous stage's solution; the committed contact history (anchors, slip)
+   !> is the same in every stage, so the last stage solves exactly the increment that failed
+   !> and only its starting point differs. More friction widens the stick zones (mu p_N /
+   !> eps_T) and stiffens the sliding modes, which is where Newton failed with low mu
+   !> (docs/verification/s3.md); each stage moves its solution a little. A failing stage fails
+   !> the attempt (then the caller cuts back). `iterations`: Newton iterations spent in all.
+   subroutine attempt_increment(model, context, state, time, max_iterations, label, quiet, report, &
+                                iterations, error, path)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      integer, intent(in) :: max_iterations
+      character(len=*), intent(in) :: label
+      logical, intent(in) :: quiet
+      type(newton_report_t), intent(out) :: report
+      integer, intent(out) :: iterations
+      type(error_t), allocatable, intent(out) :: error
+      type(path_constraint_t), intent(in), optional :: path
+      real(dp), allocatable :: factors(:)
+      real(dp) :: stage_time
+      integer :: k
+      character(len=16) :: factor_text
+
+      call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
+      iterations = report%iterations
+      if (allocated(error) .or. report%converged) return
+      if (.not. allocated(model%controls%friction_continuation)) return
+      if (.not. (context%has_contact .and. context%contact%frictional)) return
+      factors = [model%controls%friction_continuation, 1.0_dp]
+      context%n_continuations = context%n_continuations + 1
+      call restore_state(state)
+      stage_time = time   ! path following: each stage starts from the previous stage's load factor
+      do k = 1, size(factors)
+         context%contact%friction_scale = factors(k)
+         write (factor_text, '(f0.3)') factors(k)
+         if (.not. quiet) write (*, '(2x,a)') 'friction continuation: mu x '//trim(factor_text)
+         call solve_increment(model, context, state, stage_time, max_iterations, label, report, error, path)
+         iterations = iterations + report%iterations
+         if (allocated(error)) exit
+         if (.not. report%converged) then
+            if (allocated(report%failure)) report%failure = report%failure// &
+               ' in the friction continuation''s stage mu x '//trim(factor_text)
+            exit
+         end if
+         stage_time = state%time
+      end do
+      context%contact%friction_scale = 1.0_dp
+   end subroutine attempt_increment
 
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
    !> file of an earlier run of the same model, and say where the run continues: the step
@@ -376,7 +433,7 @@ contains
       integer, intent(in) :: iterations
       real(dp) :: left, end_time
       end_time = real(size(model%steps), dp)
-      write (*, '(2x,"converged in",i3," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
+      write (*, '(2x,"converged in",i4," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
              '" (",f5.1," %)")', advance='no') iterations, seconds, time, end_time, 100.0_dp*time/end_time
       ! no estimate when the load factor decreased (path following past a limit point)
       if (time > previous_time) then

@@ -72,6 +72,7 @@ module frix_newton_solver
       integer :: n_iterations = 0              !! Newton corrections of the whole run
       integer :: n_line_search_trials = 0      !! shortened steps tried by the contact line search
       integer :: n_releases = 0                !! converged iterates where held nodes were released
+      integer :: n_continuations = 0           !! failed increments retried by friction continuation
    end type newton_context_t
 
    !> What happened in one increment.

@@ -508,6 +508,9 @@ contains
                      call reader%report(line, position - 1, 'unknown solver (expected Auto, Cholmod or Umfpack)')
                      ok = .false.
                   end select
+               case ('MU_CONTINUATION')
+                  position = position + 1
+                  call read_friction_continuation(reader, line, position, model%controls%friction_continuation, ok)
                case ('NEWTONRAPHSO')
                   position = position + 1
                   call reader%take_word(line, position, 'NEWTONRAPHSO value', word, ok)
@@ -558,7 +561,7 @@ contains
          if (keyword == 'PROBLEMTYP') accepted = keyword
       case (s_static)
          select case (keyword)
-         case ('KINTYP', 'MAXITER', 'MAXCUT', 'TOLRESID', 'TOLDISP', 'SOLVER', 'NEWTONRAPHSO')
+         case ('KINTYP', 'MAXITER', 'MAXCUT', 'TOLRESID', 'TOLDISP', 'SOLVER', 'NEWTONRAPHSO', 'MU_CONTINUATION')
             accepted = keyword
          end select
       case (s_results)
@@ -568,6 +571,36 @@ contains
          end select
       end select
    end function section_keyword
+
+   !> `MU_CONTINUATION f_1 f_2 ... f_m` (after the keyword): the friction scale factors of the
+   !> continuation stages, each greater than 1 and smaller than the one before (the final
+   !> stage, factor 1, is implied); the list ends at the line's end or at the next token that
+   !> is not a number.
+   subroutine read_friction_continuation(reader, line, position, factors, ok)
+      type(reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      real(dp), allocatable, intent(inout) :: factors(:)
+      logical, intent(inout) :: ok
+      real(dp) :: value
+      logical :: numeric
+      character(len=:), allocatable :: message
+      factors = [real(dp) ::]
+      do while (ok .and. position <= line%n_tokens())
+         call parse_real(line%token(position), value, numeric, message)
+         if (.not. numeric) exit
+         call reader%take_real(line, position, 'MU_CONTINUATION factor', value, ok)
+         call require(reader, ok, value > 1.0_dp, line, position - 1, &
+                      'MU_CONTINUATION factors must be greater than 1 (the final stage, 1, is implied)')
+         if (ok .and. size(factors) > 0) call require(reader, ok, value < factors(size(factors)), line, &
+                                                     position - 1, 'MU_CONTINUATION factors must decrease')
+         if (ok) factors = [factors, value]
+      end do
+      if (ok .and. size(factors) == 0) then
+         call reader%report(line, position, 'missing MU_CONTINUATION factor (a number greater than 1)')
+         ok = .false.
+      end if
+   end subroutine read_friction_continuation
 
    !> `HISTORY NODE <id> DOF <1-3> [KIND U|R]` (after HISTORY).
    subroutine read_history(reader, line, position, request, ok)

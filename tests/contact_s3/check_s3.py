@@ -2,11 +2,12 @@
 """Checks of one S3 run (elastic punch on a foundation, docs/verification/s3.md).
 
 usage: check_s3.py OUTDIR BASE CENTRE_NODE MU [--reference FILE] [--summary]
+                   [--stop-between LOW HIGH]
 
 Reads <OUTDIR>/<BASE>_history.csv, _contact.csv and the last .vtu of <BASE>.pvd and checks
   1. the run reached t = 1 (the whole load);
-  2. global equilibrium in z: sum of the bottom reactions R_z = 800 x (x-y projected area of the
-     deformed punch top). The z component of a follower pressure p on a face is p times the
+  2. global equilibrium in z: sum of the bottom reactions R_z = t x 800 x (x-y projected area
+     of the deformed punch top), t the load factor of the last increment (1 at the full load). The z component of a follower pressure p on a face is p times the
      face's projected area (the integral of n da is the vector area), and 2x2 Gauss
      integrates the bilinear face exactly; the symmetry planes carry no z reaction. Tolerance
      1e-6 relative: the residual tolerance (TOLRESID 1e-8 of the force scale) with margin;
@@ -15,6 +16,8 @@ Reads <OUTDIR>/<BASE>_history.csv, _contact.csv and the last .vtu of <BASE>.pvd 
      Newton tolerance), and against the stored mu = 0.5 value (the mu-independence of the
      displacement) within the tolerance stored in the file (reasoning in s3.md).
 --summary prints the per-increment centre displacement and the interface force sums.
+--stop-between LOW HIGH replaces 1.: the run stopped before the full load (at a limit point of
+the model) and its last converged increment has LOW <= t <= HIGH; 2. holds there.
 """
 import csv
 import glob
@@ -75,8 +78,14 @@ def main():
         reference = args[args.index("--reference") + 1]
     history = read_history(os.path.join(outdir, base + "_history.csv"), centre)
 
-    # 1. the whole load
-    if abs(history[-1][0] - FULL_LOAD_TIME) > 1e-9:
+    # 1. the whole load, or the expected stop
+    if "--stop-between" in args:
+        at = args.index("--stop-between")
+        low, high = float(args[at + 1]), float(args[at + 2])
+        if not low <= history[-1][0] <= high:
+            fail("the last converged increment is at t = %.6g, expected %g <= t <= %g" %
+                 (history[-1][0], low, high))
+    elif abs(history[-1][0] - FULL_LOAD_TIME) > 1e-9:
         fail("the run stopped at t = %.6g, not at t = 1" % history[-1][0])
     u_centre = history[-1][1]
 
@@ -93,7 +102,7 @@ def main():
     for cell in cells:
         face = cell[4:8]                       # HEX8 face 2 (zeta = +1): nodes 5 6 7 8
         if all(int(n) in top_set for n in face):
-            applied += PRESSURE * quad_projected_area((points[face] + u[face])[:, :2])
+            applied += history[-1][0] * PRESSURE * quad_projected_area((points[face] + u[face])[:, :2])
     bottom_reaction = reaction[:, 2].sum()
     if applied <= 0.0 or abs(bottom_reaction - applied) > 1e-6 * applied:
         fail("equilibrium: sum R_z = %.10g, applied 800 x projected top area = %.10g" %
@@ -157,8 +166,8 @@ def main():
         if abs(u_centre - table[0.5]) > mu_tolerance * abs(table[0.5]):
             fail("centre u_z = %.10f differs from the mu = 0.5 value %.10f by more than %g relative" %
                  (u_centre, table[0.5], mu_tolerance))
-    print("check_s3.py: OK: %s: t = 1 reached, centre u_z = %.8f, R_z = %.6f = applied %.6f" %
-          (base, u_centre, bottom_reaction, applied))
+    print("check_s3.py: OK: %s: t = %.6f reached, centre u_z = %.8f, R_z = %.6f = applied %.6f" %
+          (base, history[-1][0], u_centre, bottom_reaction, applied))
 
 
 if __name__ == "__main__":

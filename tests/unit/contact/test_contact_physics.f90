@@ -9,7 +9,9 @@
 !>   - the anchor is a material point of the master: a rigid rotation and translation of slave
 !>     and master together rotates the traction and leaves p_N unchanged (history follows
 !>     large sliding);
-!>   - beyond an edge without clamp the kernel reports `outside` and gives no force.
+!>   - beyond an edge without clamp the kernel reports `outside` and gives no force;
+!>   - a friction scale f (the driver's friction continuation) gives exactly the response with
+!>     mu replaced by f mu, on a face and on a plane, in slip and where it turns slip into stick.
 module test_contact_physics
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -44,7 +46,8 @@ contains
                new_unittest('beyond an edge without clamp: outside, no force', test_outside), &
                new_unittest('rigid plane: normal force, stick and slip', test_plane_physics), &
                new_unittest('separated node: open, anchor = closest point', test_open_anchor), &
-               new_unittest('crossing an edge with clamp: force continuous', test_edge_continuity)]
+               new_unittest('crossing an edge with clamp: force continuous', test_edge_continuity), &
+               new_unittest('friction scale f: the response of f mu', test_friction_scale)]
    end subroutine collect_contact_physics
 
    subroutine test_normal_force(error)
@@ -297,4 +300,46 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_edge_continuity
+   !> The slip configuration of test_slip_traction (|t_trial| = 100 against mu p_N = 30): with
+   !> the scale 2.5 it still slips (75), with 5 it sticks (150 > 100); each must equal the
+   !> kernel's answer for the coefficient f mu without a scale, to round-off.
+   subroutine test_friction_scale(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: scales(2) = [2.5_dp, 5.0_dp]
+      integer, parameter :: expected_status(2) = [contact_slip, contact_stick]
+      type(contact_point_result_t) :: scaled, reference
+      real(dp) :: fint_scaled(15), fint_reference(15), tangent_scaled(15, 15), tangent_reference(15, 15)
+      real(dp) :: x_slave(3)
+      integer :: k
+      x_slave = [slave_xy(1), slave_xy(2), -depth]
+      do k = 1, size(scales)
+         call node_face_contact(make_parameters(mu), x_slave, flat_face, area, [-0.4_dp, -0.5_dp], .true., &
+                                .false., scaled, fint_scaled, tangent_scaled, friction_scale=scales(k))
+         call node_face_contact(make_parameters(scales(k)*mu), x_slave, flat_face, area, [-0.4_dp, -0.5_dp], &
+                                .true., .false., reference, fint_reference, tangent_reference)
+         call check(error, scaled%status == expected_status(k) .and. reference%status == expected_status(k), &
+                    'face, scale '//to_string(k)//': status '//to_string(scaled%status)//' and '// &
+                    to_string(reference%status)//', expected '//to_string(expected_status(k)))
+         if (allocated(error)) return
+         call check(error, maxval(abs(fint_scaled - fint_reference)) <= 1.0e-13_dp*maxval(abs(fint_reference)) &
+                    .and. maxval(abs(tangent_scaled - tangent_reference)) <= &
+                    1.0e-13_dp*maxval(abs(tangent_reference)) .and. &
+                    maxval(abs(scaled%traction - reference%traction)) <= 1.0e-13_dp*norm2(reference%traction), &
+                    'face, scale '//to_string(k)//': force, tangent or traction differ from those of f mu')
+         if (allocated(error)) return
+         call node_plane_contact(make_parameters(mu), x_slave, [0.0_dp, 0.0_dp, 0.0_dp], [0.0_dp, 0.0_dp, 1.0_dp], &
+                                 area, [0.6_dp, 0.25_dp, 0.0_dp], .true., scaled, fint_scaled(:3), &
+                                 tangent_scaled(:3, :3), friction_scale=scales(k))
+         call node_plane_contact(make_parameters(scales(k)*mu), x_slave, [0.0_dp, 0.0_dp, 0.0_dp], &
+                                 [0.0_dp, 0.0_dp, 1.0_dp], area, [0.6_dp, 0.25_dp, 0.0_dp], .true., reference, &
+                                 fint_reference(:3), tangent_reference(:3, :3))
+         call check(error, scaled%status == expected_status(k) .and. reference%status == expected_status(k) .and. &
+                    maxval(abs(fint_scaled(:3) - fint_reference(:3))) <= 1.0e-13_dp*maxval(abs(fint_reference(:3))) &
+                    .and. maxval(abs(tangent_scaled(:3, :3) - tangent_reference(:3, :3))) <= &
+                    1.0e-13_dp*maxval(abs(tangent_reference(:3, :3))), &
+                    'plane, scale '//to_string(k)//': status, force or tangent differ from those of f mu')
+         if (allocated(error)) return
+      end do
+   end subroutine test_friction_scale
+
 end module test_contact_physics
