@@ -320,12 +320,11 @@ contains
       real(dp), intent(in), optional :: friction_scale  !! as for node_face_contact
       type(dual_t) :: trial(3)
       logical :: law_slipping
+      real(dp) :: scale
+      scale = 1.0_dp
+      if (present(friction_scale)) scale = friction_scale
       trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, normal)*normal)
-      if (present(friction_scale)) then
-         call parameters%friction%return_map(trial, friction_scale*pressure, branch, traction, slipping, law_slipping)
-      else
-         call parameters%friction%return_map(trial, pressure, branch, traction, slipping, law_slipping)
-      end if
+      call parameters%friction%return_map(trial, scale*pressure, branch, traction, slipping, law_slipping)
       law_status = merge(contact_slip, contact_stick, law_slipping)
    end subroutine friction_response
 

@@ -217,7 +217,7 @@ contains
                         'the displacement at '//equation_label(model, path%equation)//' from '// &
                         time_text(state%committed_u(path%equation))//' to '//time_text(path%target)
             call attempt_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
-                                   quiet, report, iterations, error, path)
+                                   report, iterations, error, path)
             if (allocated(error)) return
             if (report%converged .and. state%time > step_end) then
                ! past the step's end: land on it under load control
@@ -234,10 +234,10 @@ contains
             attempted = 'the increment from t = '//time_text(state%committed_time)//' to t = '//time_text(target_time)
             if (landing) then
                call attempt_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                      quiet, report, iterations, error, landing_path)
+                                      report, iterations, error, landing_path)
             else
                call attempt_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                      quiet, report, iterations, error)
+                                      report, iterations, error)
             end if
             if (allocated(error)) return
          end if
@@ -286,15 +286,14 @@ contains
    !> eps_T) and stiffens the sliding modes, which is where Newton failed with low mu
    !> (docs/verification/s3.md); each stage moves its solution a little. A failing stage fails
    !> the attempt (then the caller cuts back). `iterations`: Newton iterations spent in all.
-   subroutine attempt_increment(model, context, state, time, max_iterations, label, quiet, report, &
-                                iterations, error, path)
+   subroutine attempt_increment(model, context, state, time, max_iterations, label, report, iterations, &
+                                error, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(in) :: time
       integer, intent(in) :: max_iterations
       character(len=*), intent(in) :: label
-      logical, intent(in) :: quiet
       type(newton_report_t), intent(out) :: report
       integer, intent(out) :: iterations
       type(error_t), allocatable, intent(out) :: error
@@ -316,7 +315,7 @@ contains
       do k = 1, size(factors)
          context%contact%friction_scale = factors(k)
          write (factor_text, '(f0.3)') factors(k)
-         if (.not. quiet) write (*, '(2x,a)') 'friction continuation: mu x '//trim(factor_text)
+         if (.not. context%quiet) write (*, '(2x,a)') 'friction continuation: mu x '//trim(factor_text)
          call solve_increment(model, context, state, stage_time, max_iterations, label, report, error, path)
          iterations = iterations + report%iterations
          if (allocated(error)) exit

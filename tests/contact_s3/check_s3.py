@@ -7,8 +7,8 @@ usage: check_s3.py OUTDIR BASE CENTRE_NODE MU [--reference FILE] [--summary]
 Reads <OUTDIR>/<BASE>_history.csv, _contact.csv and the last .vtu of <BASE>.pvd and checks
   1. the run reached t = 1 (the whole load);
   2. global equilibrium in z: sum of the bottom reactions R_z = t x 800 x (x-y projected area
-     of the deformed punch top), t the load factor of the last increment (1 at the full load). The z component of a follower pressure p on a face is p times the
-     face's projected area (the integral of n da is the vector area), and 2x2 Gauss
+     of the deformed punch top), t the load factor of the last increment (1 at the full load).
+     The z component of a follower pressure p on a face is p times the face's projected area (the integral of n da is the vector area), and 2x2 Gauss
      integrates the bilinear face exactly; the symmetry planes carry no z reaction. Tolerance
      1e-6 relative: the residual tolerance (TOLRESID 1e-8 of the force scale) with margin;
   3. with --reference: the punch-top centre displacement u_z at t = 1 against the stored frix
@@ -16,8 +16,8 @@ Reads <OUTDIR>/<BASE>_history.csv, _contact.csv and the last .vtu of <BASE>.pvd 
      Newton tolerance), and against the stored mu = 0.5 value (the mu-independence of the
      displacement) within the tolerance stored in the file (reasoning in s3.md).
 --summary prints the per-increment centre displacement and the interface force sums.
---stop-between LOW HIGH replaces 1.: the run stopped before the full load (at a limit point of
-the model) and its last converged increment has LOW <= t <= HIGH; 2. holds there.
+--stop-between LOW HIGH replaces 1.: the run stopped before the full load and its last
+converged increment has LOW <= t <= HIGH; 2. holds there.
 """
 import csv
 import glob
@@ -105,10 +105,10 @@ def main():
             applied += history[-1][0] * PRESSURE * quad_projected_area((points[face] + u[face])[:, :2])
     bottom_reaction = reaction[:, 2].sum()
     if applied <= 0.0 or abs(bottom_reaction - applied) > 1e-6 * applied:
-        fail("equilibrium: sum R_z = %.10g, applied 800 x projected top area = %.10g" %
+        fail("equilibrium: sum R_z = %.10g, applied t x 800 x projected top area = %.10g" %
              (bottom_reaction, applied))
 
-    # interface forces at t = 1 (reported): tributary areas of the regular punch bottom grid
+    # interface forces at the last increment (reported): tributary areas of the regular punch bottom grid
     rows, _ = contact_rows(os.path.join(outdir, base + "_contact.csv"))
     # Tributary areas of the slave nodes: the punch bottom is a regular n x n grid of
     # spacing h = 5/(n - 1) whose node ids run x fastest, then y (MESH BLOCK); a node's

@@ -6,8 +6,7 @@
 # Load control: exit 0 if the run reaches the full load, is in equilibrium and (with
 # --reference) matches the stored frix value and the mu = 0.5 displacement within the stored
 # tolerance (check_s3.py).
-# --stop-between LOW HIGH (a run expected to stop before the full load, at a limit point of
-# the model): exit 0 if frix stops in order (exit status 1, "at the smallest increment
+# --stop-between LOW HIGH (a run expected to stop before the full load): exit 0 if frix stops in order (exit status 1, "at the smallest increment
 # allowed"), its last converged increment has LOW <= t <= HIGH and is in equilibrium, and (with
 # --expect-log) its output contains TEXT.
 # --path-limit LIMIT (a CONTROL Path deck past a limit point): exit 0 if the run ends at its
@@ -23,8 +22,8 @@ start=$(date +%s)
 status=$?
 echo "run_s3.sh: $base: frix exit status $status, $(( $(date +%s) - start )) s"
 grep -E "converged in|cut-back" "$out/run.log" | cut -c1-160
+[ $status -ne 0 ] && grep -E "^frix: step|failed" "$out/run.log" | cut -c1-400
 if [ $# -ge 5 ] && [ "$3" = "--stop-between" ]; then
-   grep -E "^frix: step|failed" "$out/run.log" | cut -c1-400
    if [ $status -ne 1 ] || ! grep -q "at the smallest increment allowed" "$out/run.log" || \
       grep -qE "Fortran runtime error|Backtrace" "$out/run.log"; then
       echo "run_s3.sh: FAIL: $base did not stop in order at the smallest increment (exit status $status)"
@@ -38,7 +37,6 @@ if [ $# -ge 5 ] && [ "$3" = "--stop-between" ]; then
    exit $?
 fi
 if [ $status -ne 0 ]; then
-   grep -E "^frix: step|failed" "$out/run.log" | cut -c1-400
    echo "run_s3.sh: FAIL: $base did not run to its end"
    exit 1
 fi

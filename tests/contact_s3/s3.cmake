@@ -23,8 +23,8 @@ set_tests_properties(contact_s3_coarse_mu0.1 PROPERTIES DISABLED TRUE)
 # mu = 0.1 with friction continuation (MU_CONTINUATION 5 3.5 2.5 1.8 1.3, docs/solver.md): the
 # run gets past the t = 0.754 of the plain deck to just below the load maximum t = 0.7919 of
 # this discrete model (contact_s3_coarse_mu0.1_path) and stops there in order; measured
-# t = 0.789062 (8 increments, 14 continuations, 45 s). Bounds: at least 0.785 (two cut
-# increments short of the measured stop: a weaker continuation stops earlier) and at most the
+# t = 0.789062 (8 increments, 14 continuations, 45 s). Bounds: at least 0.785 (one increment of
+# the last size, 1/256, short of the measured stop: a weaker continuation stops earlier) and at most the
 # limit point plus the smallest increment 1/6/2^6 (a load-controlled run cannot pass it).
 add_test(NAME contact_s3_coarse_mu0.1_continuation
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.1_continuation.dck 1101 0.1
@@ -60,7 +60,7 @@ foreach(mu 0.5 0.1 0.25)
 endforeach()
 set_tests_properties(contact_s3_refined_mu0.1 contact_s3_refined_mu0.25 PROPERTIES DISABLED TRUE)
 
-# Refined mesh, mu = 0.1 with friction continuation (slow, 10 min): from t = 0.0026 without it
+# Refined mesh, mu = 0.1 with friction continuation (slow: 1005 s with the other core busy): from t = 0.0026 without it
 # to t = 0.815 (measured 0.815104, 55 increments), where Newton fails at the punch edge on the
 # fold of the foundation surface; not a limit point (the load still rises with the corner's
 # displacement at dt / d(-u_z) = 0.27), so the full load is not excluded: when frix gets there,
