@@ -32,7 +32,10 @@ module frix_contact_assembly
    use frix_face_projection, only: face_position, face_normal, closest_point_in_face, &
                                    face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
-                                  contact_open, contact_stick, contact_slip
+                                  contact_open, contact_stick, contact_slip, patch_normals, smooth_projection, &
+                                  smooth_normal_at, max_ring_nodes
+   use frix_face_projection, only: face_contains
+   use frix_strings, only: to_string
    use frix_friction_law, only: branch_free, branch_stick, branch_slip
    implicit none
    private
@@ -50,6 +53,12 @@ module frix_contact_assembly
       real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
       integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
+      !> smoothed normals (NORMALS Smoothed): the patch of every master face f, i.e. the faces
+      !> around its 4 nodes: ring_nodes(ring_start(f) + 1 : ring_start(f + 1)) are the patch's
+      !> nodes other than the face's own, patch_faces(:, patch_start(f) + 1 : patch_start(f + 1))
+      !> its faces in local node numbers (1-4 the face's nodes, 4 + j ring node j)
+      logical :: smooth = .false.
+      integer, allocatable :: ring_start(:), ring_nodes(:), patch_start(:), patch_faces(:, :)
       ! the current iterate
       integer, allocatable :: face(:)          !! master face of each slave node, 0: none
       !> friction branch imposed on each slave node in this increment (branch_free: the law
@@ -71,7 +80,9 @@ module frix_contact_assembly
       type(contact_pass_t), allocatable :: passes(:)
       integer, allocatable :: extra_pairs(:, :)   !! (2, n) node pairs added to the sparse pattern
       integer :: n_extra = 0
-      logical :: frictional = .false.             !! some pair has friction: unsymmetric tangent
+      logical :: frictional = .false.             !! some pair has friction
+      !> friction or smoothed normals: the contact tangent is unsymmetric
+      logical :: unsymmetric = .false.
       !> factor on the pressure every friction law sees, i.e. on mu for Coulomb; 1 except in
       !> the stages of the driver's friction continuation
       real(dp) :: friction_scale = 1.0_dp
@@ -85,13 +96,16 @@ module frix_contact_assembly
    integer, parameter :: contact_history_rows = 8  !! rows of get_contact_history
 
    real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
+   !> most nodes of one kernel call: slave, face, anchor face, smoothed-normal ring
+   integer, parameter :: max_kernel_nodes = 9 + max_ring_nodes
 
 contains
 
    !> Slave nodes, tributary areas and master faces of every pass.
-   subroutine setup_contact(model, system)
+   subroutine setup_contact(model, system, error)
       type(model_t), intent(in) :: model
       type(contact_system_t), intent(out) :: system
+      type(error_t), allocatable, intent(out) :: error
       integer :: p, n_passes, k
       n_passes = 0
       do p = 1, size(model%contact_pairs)
@@ -103,20 +117,24 @@ contains
       do p = 1, size(model%contact_pairs)
          associate (pair => model%contact_pairs(p))
             k = k + 1
-            call setup_pass(model, p, pair%slave_surface, pair%master_surface, system%passes(k))
+            call setup_pass(model, p, pair%slave_surface, pair%master_surface, system%passes(k), error)
+            if (allocated(error)) return
             if (pair%passes == 2) then
                k = k + 1
-               call setup_pass(model, p, pair%master_surface, pair%slave_surface, system%passes(k))
+               call setup_pass(model, p, pair%master_surface, pair%slave_surface, system%passes(k), error)
+               if (allocated(error)) return
             end if
             if (.not. pair%parameters%friction%frictionless()) system%frictional = .true.
+            if (system%frictional .or. pair%parameters%smoothed_normals) system%unsymmetric = .true.
          end associate
       end do
    end subroutine setup_contact
 
-   subroutine setup_pass(model, pair, slave_surface, master_surface, pass)
+   subroutine setup_pass(model, pair, slave_surface, master_surface, pass, error)
       type(model_t), intent(in) :: model
       integer, intent(in) :: pair, slave_surface, master_surface
       type(contact_pass_t), intent(out) :: pass
+      type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: position_of(:)
       real(dp), allocatable :: node_area(:)
       real(dp) :: coords(3, 4), weights(4), size_sum
@@ -164,6 +182,10 @@ contains
             end do
             pass%band = 0.5_dp*size_sum/max(1, size(surface%elements))
          end associate
+         if (model%contact_pairs(pair)%parameters%smoothed_normals) then
+            call build_patches(model, pass, error)
+            if (allocated(error)) return
+         end if
       end if
       pass%band = max(pass%band, model%contact_pairs(pair)%parameters%gap_tolerance)
       allocate (pass%face(n_slave), pass%anchor_face(n_slave), source=0)
@@ -177,6 +199,86 @@ contains
       if (pass%rigid) pass%face = 1   ! every slave node faces the plane
       call initial_anchors(model, pass)
    end subroutine setup_pass
+
+   !> The smoothed-normal patch of every master face: the faces that share a node with it.
+   subroutine build_patches(model, pass, error)
+      type(model_t), intent(in) :: model
+      type(contact_pass_t), intent(inout) :: pass
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: node_start(:), node_faces(:), fill(:), adjacent(:), local(:, :), ring(:), grown(:, :)
+      integer :: n_faces, f, g, a, b, k, node, n_adjacent, n_ring, position
+      n_faces = size(pass%faces, 2)
+      ! faces around each node, compressed rows over the mesh's nodes
+      allocate (node_start(model%mesh%n_nodes + 1), source=0)
+      do f = 1, n_faces
+         node_start(pass%faces(:, f) + 1) = node_start(pass%faces(:, f) + 1) + 1
+      end do
+      do node = 1, model%mesh%n_nodes
+         node_start(node + 1) = node_start(node + 1) + node_start(node)
+      end do
+      allocate (node_faces(node_start(model%mesh%n_nodes + 1)))
+      fill = node_start(:model%mesh%n_nodes)
+      do f = 1, n_faces
+         do a = 1, 4
+            fill(pass%faces(a, f)) = fill(pass%faces(a, f)) + 1
+            node_faces(fill(pass%faces(a, f))) = f
+         end do
+      end do
+      pass%smooth = .true.
+      allocate (pass%ring_start(n_faces + 1), pass%patch_start(n_faces + 1))
+      allocate (pass%ring_nodes(max_ring_nodes*n_faces), pass%patch_faces(4, 9*n_faces))
+      pass%ring_start(1) = 0
+      pass%patch_start(1) = 0
+      do f = 1, n_faces
+         allocate (adjacent(0), ring(0))
+         do a = 1, 4
+            node = pass%faces(a, f)
+            do k = node_start(node) + 1, node_start(node + 1)
+               if (all(adjacent /= node_faces(k))) adjacent = [adjacent, node_faces(k)]
+            end do
+         end do
+         n_adjacent = size(adjacent)
+         allocate (local(4, n_adjacent))
+         do g = 1, n_adjacent
+            do b = 1, 4
+               node = pass%faces(b, adjacent(g))
+               position = findloc(pass%faces(:, f), node, dim=1)
+               if (position == 0) then
+                  position = findloc(ring, node, dim=1)
+                  if (position == 0) then
+                     ring = [ring, node]
+                     position = size(ring)
+                  end if
+                  position = 4 + position
+               end if
+               local(b, g) = position
+            end do
+         end do
+         n_ring = size(ring)
+         if (n_ring > max_ring_nodes) then
+            call fatal_error(error, 'contact pair '//to_string(model%contact_pairs(pass%pair)%id)// &
+                             ' (deck line '//to_string(model%contact_pairs(pass%pair)%line)// &
+                             '): NORMALS Smoothed: the master face of nodes '// &
+                             to_string(model%mesh%node_ids(pass%faces(1, f)))//' '// &
+                             to_string(model%mesh%node_ids(pass%faces(2, f)))//' '// &
+                             to_string(model%mesh%node_ids(pass%faces(3, f)))//' '// &
+                             to_string(model%mesh%node_ids(pass%faces(4, f)))//' has '//to_string(n_ring)// &
+                             ' nodes around it, at most '//to_string(max_ring_nodes)// &
+                             ' are supported (4 faces at each of its nodes)')
+            return
+         end if
+         pass%ring_nodes(pass%ring_start(f) + 1:pass%ring_start(f) + n_ring) = ring
+         pass%ring_start(f + 1) = pass%ring_start(f) + n_ring
+         if (pass%patch_start(f) + n_adjacent > size(pass%patch_faces, 2)) then
+            allocate (grown(4, 2*(pass%patch_start(f) + n_adjacent)))
+            grown(:, :pass%patch_start(f)) = pass%patch_faces(:, :pass%patch_start(f))
+            call move_alloc(grown, pass%patch_faces)
+         end if
+         pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f) + n_adjacent) = local
+         pass%patch_start(f + 1) = pass%patch_start(f) + n_adjacent
+         deallocate (adjacent, ring, local)
+      end do
+   end subroutine build_patches
 
    !> Anchors of the reference configuration: every slave node starts with the closest point
    !> of its reference position on the master (its foot point on the plane, or on the nearest
@@ -220,7 +322,7 @@ contains
       real(dp), intent(in) :: u(:)
       type(sparse_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
-      integer :: p, i, a, b, n_nodes, nodes(9)
+      integer :: p, i, a, b, n_nodes, nodes(max_kernel_nodes), first_ring
       logical :: missing
 
       missing = .false.
@@ -230,11 +332,11 @@ contains
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) cycle
-               call kernel_nodes(pass, i, nodes, n_nodes)
-               ! the pairs that can be missing: the slave with every face node, and the
-               ! contact face's nodes with the anchor face's (those within a face share an
-               ! element)
-               do a = 1, merge(5, 1, n_nodes == 9)
+               call kernel_nodes(pass, i, nodes, n_nodes, first_ring)
+               ! the pairs that can be missing: the slave with every other node, and the
+               ! contact face's nodes with the anchor face's and the ring's (those within a
+               ! face share an element)
+               do a = 1, merge(5, 1, n_nodes > 5)
                   do b = max(a + 1, merge(2, 6, a == 1)), n_nodes
                      if (matrix%neighbour_index(nodes(a), nodes(b)) == 0) then
                         call add_extra_pair(system, nodes(a), nodes(b))
@@ -265,19 +367,27 @@ contains
       system%extra_pairs(:, system%n_extra) = [first, second]
    end subroutine add_extra_pair
 
-   !> The nodes of slave i's contact kernel: the slave, its master face's 4 nodes and, when its
-   !> committed anchor lies on another face, that face's 4 nodes (n_nodes = 5 or 9).
-   pure subroutine kernel_nodes(pass, i, nodes, n_nodes)
+   !> The nodes of slave i's contact kernel: the slave, its master face's 4 nodes, when its
+   !> committed anchor lies on another face that face's 4 nodes, and with smoothed normals the
+   !> face's ring, nodes(first_ring:n_nodes) (first_ring = 6 or 10).
+   pure subroutine kernel_nodes(pass, i, nodes, n_nodes, first_ring)
       type(contact_pass_t), intent(in) :: pass
       integer, intent(in) :: i
-      integer, intent(out) :: nodes(9), n_nodes
+      integer, intent(out) :: nodes(max_kernel_nodes), n_nodes, first_ring
+      integer :: f
       nodes = 0
+      f = pass%face(i)
       nodes(1) = pass%slave_nodes(i)
-      nodes(2:5) = pass%faces(:, pass%face(i))
+      nodes(2:5) = pass%faces(:, f)
       n_nodes = 5
-      if (pass%has_anchor(i) .and. pass%anchor_face(i) /= pass%face(i) .and. pass%anchor_face(i) > 0) then
+      if (pass%has_anchor(i) .and. pass%anchor_face(i) /= f .and. pass%anchor_face(i) > 0) then
          nodes(6:9) = pass%faces(:, pass%anchor_face(i))
          n_nodes = 9
+      end if
+      first_ring = n_nodes + 1
+      if (pass%smooth) then
+         n_nodes = n_nodes + pass%ring_start(f + 1) - pass%ring_start(f)
+         nodes(first_ring:n_nodes) = pass%ring_nodes(pass%ring_start(f) + 1:pass%ring_start(f + 1))
       end if
    end subroutine kernel_nodes
 
@@ -289,9 +399,9 @@ contains
       real(dp), allocatable :: lower(:, :), upper(:, :)
       integer, allocatable :: cell_start(:), cell_faces(:), counts(:)
       real(dp) :: origin(3), cell_size, x_face(3, 4), x_slave(3), xi(2), distance, best
-      real(dp) :: gap, closest(3)
-      integer :: n_cells(3), f, i, c, k, best_face, cell(3)
-      logical :: fixed(2)
+      real(dp) :: gap, closest(3), best_inside
+      integer :: n_cells(3), f, i, c, k, best_face, cell(3), best_inside_face
+      logical :: fixed(2), inside
 
       associate (faces => pass%faces)
          if (size(faces, 2) == 0) then
@@ -328,6 +438,8 @@ contains
                       u(3*pass%slave_nodes(i) - 2:3*pass%slave_nodes(i))
             best = 0.5_dp*huge(1.0_dp)   ! best*(1 + tie_tolerance) must not overflow
             best_face = 0
+            best_inside = best
+            best_inside_face = 0
             cell = cell_of(x_slave)
             if (all(x_slave >= origin) .and. all(x_slave <= origin + n_cells*cell_size)) then
                c = cell(1) + n_cells(1)*((cell(2) - 1) + n_cells(2)*(cell(3) - 1))
@@ -335,22 +447,61 @@ contains
                   f = cell_faces(k)
                   if (any(x_slave < lower(:, f)) .or. any(x_slave > upper(:, f))) cycle
                   x_face = current_face(model, u, faces(:, f))
+                  if (pass%smooth) then
+                     call smooth_candidate(f, x_face, x_slave, distance, gap, inside)
+                     if (inside .and. gap <= pass%band) &
+                        call keep_nearer(f, distance, pass%face(i), best_inside, best_inside_face)
+                  end if
                   call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
                   closest = face_position(x_face, xi)
                   distance = norm2(x_slave - closest)
                   gap = dot_product(x_slave - closest, face_normal(x_face, xi))
                   if (gap > pass%band) cycle
-                  if (distance < best*(1.0_dp - tie_tolerance) .or. &
-                      (distance <= best*(1.0_dp + tie_tolerance) .and. f == pass%face(i))) then
-                     best = distance
-                     best_face = f
-                  end if
+                  call keep_nearer(f, distance, pass%face(i), best, best_face)
                end do
             end if
-            pass%face(i) = best_face
+            ! smoothed normals: the nearest face whose normal projection lies inside it, else
+            ! (beyond a free edge of the master surface, or no projection) the nearest face
+            pass%face(i) = merge(best_inside_face, best_face, best_inside_face > 0)
          end do
       end associate
    contains
+      !> Make face f the best so far if it is nearer, or as near (within tie_tolerance) and the
+      !> node's current face, so that a node on a shared edge does not chatter.
+      pure subroutine keep_nearer(f, distance, current, best, best_face)
+         integer, intent(in) :: f, current
+         real(dp), intent(in) :: distance
+         real(dp), intent(inout) :: best
+         integer, intent(inout) :: best_face
+         if (distance < best*(1.0_dp - tie_tolerance) .or. &
+             (distance <= best*(1.0_dp + tie_tolerance) .and. f == current)) then
+            best = distance
+            best_face = f
+         end if
+      end subroutine keep_nearer
+
+      !> Face f's normal projection along the smoothed normals: distance, gap, inside the face.
+      subroutine smooth_candidate(f, x_face, x_slave, distance, gap, inside)
+         integer, intent(in) :: f
+         real(dp), intent(in) :: x_face(3, 4), x_slave(3)
+         real(dp), intent(out) :: distance, gap
+         logical, intent(out) :: inside
+         real(dp) :: nodal(3, 4), xi(2), jacobian(2, 2), offset(3)
+         logical :: converged
+         nodal = patch_normals(x_face, &
+                               current_nodes(model, u, pass%ring_nodes(pass%ring_start(f) + 1:pass%ring_start(f + 1))), &
+                               pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1)))
+         call smooth_projection(x_face, nodal, x_slave, xi, converged, jacobian)
+         inside = converged
+         if (converged) inside = face_contains(xi, model%contact_pairs(pass%pair)%parameters%edge_tolerance)
+         distance = huge(1.0_dp)
+         gap = huge(1.0_dp)
+         if (.not. inside) return
+         offset = x_slave - face_position(x_face, xi)
+         distance = norm2(offset)
+         gap = dot_product(offset, smooth_normal_at(nodal, xi))
+      end subroutine smooth_candidate
+
       !> Count face f in every cell its box covers, or (fill) also store it there.
       subroutine visit_cells(f, fill)
          integer, intent(in) :: f
@@ -376,16 +527,25 @@ contains
       end function cell_of
    end subroutine assign_faces
 
+   !> Current coordinates of nodes.
+   pure function current_nodes(model, u, nodes) result(x)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: u(:)
+      integer, intent(in) :: nodes(:)
+      real(dp) :: x(3, size(nodes))
+      integer :: a
+      do a = 1, size(nodes)
+         x(:, a) = model%mesh%coords(:, nodes(a)) + u(3*nodes(a) - 2:3*nodes(a))
+      end do
+   end function current_nodes
+
    !> Current coordinates of the 4 nodes of a face.
    pure function current_face(model, u, nodes) result(x_face)
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: u(:)
       integer, intent(in) :: nodes(4)
       real(dp) :: x_face(3, 4)
-      integer :: a
-      do a = 1, 4
-         x_face(:, a) = model%mesh%coords(:, nodes(a)) + u(3*nodes(a) - 2:3*nodes(a))
-      end do
+      x_face = current_nodes(model, u, nodes)
    end function current_face
 
    !> Add the contact contributions at u to fint and (if present) to the tangent matrix.
@@ -396,9 +556,12 @@ contains
       real(dp), intent(inout) :: fint(:)
       type(sparse_matrix_t), intent(inout), optional :: matrix
       logical, intent(in), optional :: predictor  !! first iteration of an increment: add the touching stiffness
-      real(dp) :: x_slave(3), x_face(3, 4), force(27), tangent(27, 27)
+      real(dp) :: x_slave(3), x_face(3, 4), force(3*max_kernel_nodes), tangent(3*max_kernel_nodes, 3*max_kernel_nodes)
       real(dp) :: force3(3), tangent3(3, 3), shape(4), d_xi(4), d_eta(4)
-      integer :: p, i, a, slave, nodes(9), n_nodes, n, node, attempt
+      ! absent (unallocated) unless the node's anchor lies on another face / normals are smoothed
+      real(dp), allocatable :: x_anchor_face(:, :), x_ring(:, :)
+      integer, allocatable :: patch(:, :)
+      integer :: p, i, a, slave, nodes(max_kernel_nodes), n_nodes, n, node, attempt, first_ring, f
       real(dp) :: touch_normal, touch_tangential
       logical :: touching_stiffness
 
@@ -436,21 +599,21 @@ contains
                   pass%result(i)%gap = huge(1.0_dp)
                   cycle
                end if
-               call kernel_nodes(pass, i, nodes, n_nodes)
+               call kernel_nodes(pass, i, nodes, n_nodes, first_ring)
                n = 3*n_nodes
                x_face = current_face(model, u, nodes(2:5))
+               if (first_ring == 10) x_anchor_face = current_face(model, u, nodes(6:9))
+               if (pass%smooth) then
+                  f = pass%face(i)
+                  x_ring = current_nodes(model, u, nodes(first_ring:n_nodes))
+                  patch = pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1))
+               end if
                do attempt = 1, 2
-                  if (n_nodes == 9) then
-                     ! the node moved off its anchor's face: the anchor stays a point of that face
-                     call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
-                                            pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
-                                            x_anchor_face=current_face(model, u, nodes(6:9)), branch=pass%branch(i), &
-                                            friction_scale=system%friction_scale)
-                  else
-                     call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
-                                            pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
-                                            branch=pass%branch(i), friction_scale=system%friction_scale)
-                  end if
+                  ! x_anchor_face: the node moved off its anchor's face, the anchor stays a point of that face
+                  call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
+                                         pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
+                                         x_anchor_face=x_anchor_face, branch=pass%branch(i), &
+                                         friction_scale=system%friction_scale, x_ring=x_ring, patch_faces=patch)
                   if (.not. present(matrix)) exit
                   if (.not. slip_reversed(pass, i)) exit
                end do
@@ -465,6 +628,8 @@ contains
                   fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + force(3*a - 2:3*a)
                end do
                if (present(matrix)) call matrix%add_element(nodes(:n_nodes), tangent(:n, :n))
+               if (allocated(x_anchor_face)) deallocate (x_anchor_face)
+               if (allocated(x_ring)) deallocate (x_ring, patch)
             end do
          end associate
       end do

@@ -18,6 +18,17 @@
 !>   The anchor may lie on another face than the contact face (the node slid onto a
 !>   neighbouring face since the last converged increment): x_A = sum N_a(xi_A) x_a over THAT
 !>   face's nodes, which then enter the linearization as 12 more unknowns.
+!> Smoothed normals (optional: x_ring and patch_faces given): the normal field of the master
+!>   surface is made continuous across its facets by interpolating averaged nodal normals,
+!>   n(xi) = m/|m|, m = sum_a N_a(xi) n_a, n_a = the normalised sum of the unit normals at node a
+!>   of the patch faces around it (the nodal-normal field of Abaqus' finite-sliding surfaces;
+!>   Yang, Laursen & Meng, IJNME 62 (2005), and Wriggers 2006, 9.5, for the smoothing idea).
+!>   The contact point xi* is the normal projection along that field, x_s - x(xi*) parallel
+!>   to n(xi*): r_k = d . a_k - (d . n)(n . a_k) = 0 (d = x_s - x(xi), k = 1, 2), solved by
+!>   Newton with the Jacobian of the duals in xi; g = d . n(xi*). The nodes around the face then
+!>   enter the linearization (up to max_ring_nodes more unknowns), and the tangent is
+!>   unsymmetric also without friction. On a flat surface n(xi) is the facet normal and
+!>   everything equals the facet formulation.
 !> Forces: on the slave f = A_s (p_N n + t); on master node a: -N_a(xi*) f. The kernel returns
 !>   the contribution to the INTERNAL force vector (frix: residual = fext - fint),
 !>   fint = -(forces on the nodes), node-major [slave xyz, master 1 xyz, ..., master 4 xyz,
@@ -36,6 +47,7 @@ module frix_contact_kernel
    private
 
    public :: contact_point_result_t, node_face_contact, node_plane_contact
+   public :: patch_normals, smooth_projection, smooth_normal_at, max_ring_nodes
    public :: contact_open, contact_stick, contact_slip
 
    integer, parameter :: contact_open = 0   !! g >= 0 (or outside the face without clamp): no force
@@ -68,6 +80,14 @@ module frix_contact_kernel
    !> microseconds.
    integer, parameter :: dual_newton_iterations = 1
 
+   !> Most ring nodes a smoothed-normal patch may have besides the face's 4 (with the slave and
+   !> an anchor face: 3 (1 + 4 + 4 + 12) = 63 = dual_size unknowns); 12 is the ring of a face
+   !> whose 4 nodes each have 4 faces around them (a structured quadrilateral surface).
+   integer, parameter :: max_ring_nodes = 12
+   !> Newton iterations and step tolerance (parent coordinates) of the smoothed-normal projection.
+   integer, parameter :: smooth_projection_iterations = 30
+   real(dp), parameter :: smooth_projection_tolerance = 1.0e-13_dp
+
 contains
 
    !> One slave node against one bilinear master face.
@@ -88,7 +108,7 @@ contains
    !> caller should try the neighbouring face); with `clamp` the closest point of the bounded
    !> face (on an edge or a corner) and the face normal there are used.
    subroutine node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                result, fint, tangent, x_anchor_face, branch, friction_scale)
+                                result, fint, tangent, x_anchor_face, branch, friction_scale, x_ring, patch_faces)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)      !! current slave position X + u
       real(dp), intent(in) :: x_master(3, 4)  !! current master face nodes, outward (HEX8 face) order
@@ -110,19 +130,36 @@ contains
       !> factor f on the pressure the friction law sees (default 1): the slip threshold becomes
       !> f mu p_N, i.e. Coulomb with f mu (frix_driver's friction continuation)
       real(dp), intent(in), optional :: friction_scale
+      !> smoothed normals: the patch's nodes besides x_master's (3, n_ring <= max_ring_nodes),
+      !> unknowns after those of the face (and of the anchor face); zero force entries
+      real(dp), intent(in), optional :: x_ring(:, :)
+      !> smoothed normals: the faces of the patch (4, n), x_master's face among them, as local
+      !> node numbers (1-4: x_master's nodes, 4 + j: x_ring(:, j)), outward (HEX8 face) order
+      integer, intent(in), optional :: patch_faces(:, :)
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
-      real(dp) :: xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
-      logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face
-      integer :: a, k, n_unknowns, used_branch
+      type(dual_t), allocatable :: xr(:, :)
+      type(dual_t) :: nodal(3, 4), residual(2)
+      real(dp) :: determinant, xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
+      real(dp) :: jacobian(2, 2), nodal_real(3, 4)
+      logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face, smooth
+      integer :: a, k, n_unknowns, used_branch, ring_first
 
       other_face = present(x_anchor_face)
+      smooth = present(patch_faces) .and. present(x_ring)
       used_branch = branch_free
       if (present(branch)) used_branch = branch
       n_unknowns = merge(27, 15, other_face)
+      ring_first = n_unknowns + 1
+      if (smooth) n_unknowns = n_unknowns + 3*size(x_ring, 2)
       fint = 0.0_dp
       tangent = 0.0_dp
-      call project_onto_face(x_master, x_slave, xi_start, converged)
+      if (smooth) then
+         nodal_real = patch_normals(x_master, x_ring, patch_faces)
+         call smooth_projection(x_master, nodal_real, x_slave, xi_start, converged, jacobian)
+      else
+         call project_onto_face(x_master, x_slave, xi_start, converged)
+      end if
       fixed = .false.
       result%outside = .not. (converged .and. face_contains(xi_start, parameters%edge_tolerance))
       if (result%outside) then
@@ -130,7 +167,11 @@ contains
             result%xi = xi_start
             result%gap = huge(1.0_dp)
             if (converged) then
-               result%normal = face_normal(x_master, xi_start)
+               if (smooth) then
+                  result%normal = smooth_normal_at(nodal_real, xi_start)
+               else
+                  result%normal = face_normal(x_master, xi_start)
+               end if
                result%gap = dot_product(x_slave - face_position(x_master, xi_start), result%normal)
             end if
             result%new_anchor_xi = xi_start
@@ -153,18 +194,35 @@ contains
       else
          xa = xm
       end if
+      if (smooth) then
+         allocate (xr(3, size(x_ring, 2)))
+         do a = 1, size(x_ring, 2)
+            xr(:, a) = dual_variable(x_ring(:, a), ring_first + 3*(a - 1))
+         end do
+         call patch_nodal_normals(xm, xr, patch_faces, nodal)
+      end if
 
       xi = dual_constant(xi_start)
       if (any(fixed)) then
          call edge_point(xs, xm, fixed, xi)
+      else if (smooth) then
+         ! implicit-function derivative of r(xi*, q) = 0: dxi*/dq = -J^{-1} dr/dq
+         call smooth_residual(xs, xm, nodal, xi, residual)
+         determinant = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
+         xi(1) = xi(1) - (jacobian(2, 2)*residual(1) - jacobian(1, 2)*residual(2))/determinant
+         xi(2) = xi(2) - (jacobian(1, 1)*residual(2) - jacobian(2, 1)*residual(1))/determinant
       else
          do k = 1, dual_newton_iterations
             call newton_step(xs, xm, xi)
          end do
       end if
       call face_geometry(xm, xi, shape, x, a1, a2)
-      normal = dual_cross(a1, a2)
-      normal = normal/dual_norm(normal)
+      if (smooth) then
+         normal = smooth_normal(nodal, shape)
+      else
+         normal = dual_cross(a1, a2)
+         normal = normal/dual_norm(normal)
+      end if
       gap = dual_dot(xs - x, normal)
 
       result%xi = xi%value
@@ -391,6 +449,114 @@ contains
       end if
       xi(free) = dual_dot(xs - middle, edge)/dual_dot(edge, edge)
    end subroutine edge_point
+
+   !> Averaged nodal normals n_a (a = 1..4, the face's nodes) of a patch: the normalised sum,
+   !> over the patch faces that hold node a, of their unit normal at that node's corner.
+   pure subroutine patch_nodal_normals(xm, xr, patch_faces, nodal)
+      type(dual_t), intent(in) :: xm(3, 4), xr(:, :)
+      integer, intent(in) :: patch_faces(:, :)
+      type(dual_t), intent(out) :: nodal(3, 4)
+      type(dual_t) :: corner_face(3, 4), shape(4), x(3), a1(3), a2(3), face_unit(3)
+      integer :: a, f, j, b
+      do a = 1, 4
+         nodal(:, a) = dual_constant(0.0_dp)
+         do f = 1, size(patch_faces, 2)
+            j = findloc(patch_faces(:, f), a, dim=1)
+            if (j == 0) cycle
+            do b = 1, 4
+               if (patch_faces(b, f) <= 4) then
+                  corner_face(:, b) = xm(:, patch_faces(b, f))
+               else
+                  corner_face(:, b) = xr(:, patch_faces(b, f) - 4)
+               end if
+            end do
+            call face_geometry(corner_face, dual_constant([face_node_xi(j), face_node_eta(j)]), shape, x, a1, a2)
+            face_unit = dual_cross(a1, a2)
+            nodal(:, a) = nodal(:, a) + face_unit/dual_norm(face_unit)
+         end do
+         nodal(:, a) = nodal(:, a)/dual_norm(nodal(:, a))
+      end do
+   end subroutine patch_nodal_normals
+
+   !> The smoothed normal n = m/|m|, m = sum_a N_a n_a, from the shape functions at xi.
+   pure function smooth_normal(nodal, shape) result(normal)
+      type(dual_t), intent(in) :: nodal(3, 4), shape(4)
+      type(dual_t) :: normal(3)
+      integer :: k
+      do k = 1, 3
+         normal(k) = dual_dot(shape, nodal(k, :))
+      end do
+      normal = normal/dual_norm(normal)
+   end function smooth_normal
+
+   !> Residual of the projection along the smoothed normal field: r_k = d . a_k - (d . n)(n . a_k),
+   !> d = x_s - x(xi); zero when d is parallel to n(xi).
+   pure subroutine smooth_residual(xs, xm, nodal, xi, residual)
+      type(dual_t), intent(in) :: xs(3), xm(3, 4), nodal(3, 4), xi(2)
+      type(dual_t), intent(out) :: residual(2)
+      type(dual_t) :: shape(4), x(3), a1(3), a2(3), normal(3), distance(3), normal_distance
+      call face_geometry(xm, xi, shape, x, a1, a2)
+      normal = smooth_normal(nodal, shape)
+      distance = xs - x
+      normal_distance = dual_dot(distance, normal)
+      residual(1) = dual_dot(distance, a1) - normal_distance*dual_dot(normal, a1)
+      residual(2) = dual_dot(distance, a2) - normal_distance*dual_dot(normal, a2)
+   end subroutine smooth_residual
+
+   !> The averaged nodal normals of a patch (real values; see patch_nodal_normals): column a
+   !> for the face's node a. x_ring and patch_faces as for node_face_contact.
+   pure function patch_normals(x_face, x_ring, patch_faces) result(nodal_real)
+      real(dp), intent(in) :: x_face(3, 4), x_ring(:, :)
+      integer, intent(in) :: patch_faces(:, :)
+      real(dp) :: nodal_real(3, 4)
+      type(dual_t) :: nodal(3, 4)
+      call patch_nodal_normals(dual_constant(x_face), dual_constant(x_ring), patch_faces, nodal)
+      nodal_real = nodal%value
+   end function patch_normals
+
+   !> The smoothed normal at xi from real nodal normals.
+   pure function smooth_normal_at(nodal_real, xi) result(normal)
+      real(dp), intent(in) :: nodal_real(3, 4), xi(2)
+      real(dp) :: normal(3), shape(4), d_xi(4), d_eta(4)
+      call face_shape_functions(xi, shape, d_xi, d_eta)
+      normal = matmul(nodal_real, shape)
+      normal = normal/norm2(normal)
+   end function smooth_normal_at
+
+   !> Projection of `point` onto the face along the smoothed normal field of the nodal
+   !> normals `nodal_real`: Newton on r(xi) = 0 (smooth_residual) from the facet closest point,
+   !> with the exact Jacobian dr/dxi (duals seeded in xi), returned at the solution.
+   !> Not converged: no solution within the iteration limit or a singular Jacobian.
+   pure subroutine smooth_projection(x_face, nodal_real, point, xi, converged, jacobian)
+      real(dp), intent(in) :: x_face(3, 4), nodal_real(3, 4), point(3)
+      real(dp), intent(out) :: xi(2)
+      logical, intent(out) :: converged
+      real(dp), intent(out) :: jacobian(2, 2)
+      type(dual_t) :: xi_d(2), residual(2)
+      real(dp) :: step(2), determinant
+      logical :: facet_converged
+      integer :: iteration
+      call project_onto_face(x_face, point, xi, facet_converged)
+      if (.not. facet_converged .or. any(abs(xi) > 2.0_dp)) xi = 0.0_dp
+      converged = .false.
+      do iteration = 1, smooth_projection_iterations + 1
+         xi_d = dual_variable(xi, 1)
+         call smooth_residual(dual_constant(point), dual_constant(x_face), dual_constant(nodal_real), xi_d, residual)
+         jacobian(1, :) = residual(1)%gradient(1:2)
+         jacobian(2, :) = residual(2)%gradient(1:2)
+         determinant = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
+         if (.not. (abs(determinant) > 0.0_dp)) then
+            converged = .false.
+            return
+         end if
+         if (converged .or. iteration > smooth_projection_iterations) return
+         step(1) = (jacobian(2, 2)*residual(1)%value - jacobian(1, 2)*residual(2)%value)/determinant
+         step(2) = (jacobian(1, 1)*residual(2)%value - jacobian(2, 1)*residual(1)%value)/determinant
+         xi = xi - step
+         if (any(abs(xi) > 10.0_dp)) return
+         converged = maxval(abs(step)) < smooth_projection_tolerance
+      end do
+   end subroutine smooth_projection
 
    pure function unit(vector) result(direction)
       real(dp), intent(in) :: vector(3)

@@ -24,6 +24,9 @@ module frix_contact_parameters
       real(dp) :: gap_tolerance = 0.0_dp
       !> A closest point with |xi_k| <= 1 + edge_tolerance counts as inside the face.
       real(dp) :: edge_tolerance = default_edge_tolerance
+      !> NORMALS Smoothed: the master surface's normal field is interpolated from averaged
+      !> nodal normals (frix_contact_kernel), continuous across faces; .false.: facet normals
+      logical :: smoothed_normals = .false.
       class(friction_law_t), allocatable :: friction   !! Coulomb or frictionless
    end type contact_parameters_t
 

@@ -105,9 +105,10 @@ contains
       context%symmetric = .not. has_follower_loads(model)
       if (allocated(model%contact_pairs)) context%has_contact = size(model%contact_pairs) > 0
       if (context%has_contact) then
-         call setup_contact(model, context%contact)
-         ! the slip branch of Coulomb friction makes the tangent unsymmetric
-         if (context%contact%frictional) context%symmetric = .false.
+         call setup_contact(model, context%contact, error)
+         if (allocated(error)) return
+         ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
+         if (context%contact%unsymmetric) context%symmetric = .false.
       end if
       select case (model%controls%linear_solver)
       case (solver_cholmod)

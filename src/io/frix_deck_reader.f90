@@ -1732,7 +1732,8 @@ contains
 
    !> CONTACT CONDITIONS: one pair per line,
    !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE [POINT x y z NORMAL nx ny nz]
-   !>  EPSN <eps_N> [EPST <eps_T>] [MU <mu>] [LAW Coulomb|Frictionless] [GAPTOL <g>] [PASSES 1|2]`.
+   !>  EPSN <eps_N> [EPST <eps_T>] [MU <mu>] [LAW Coulomb|Frictionless] [GAPTOL <g>] [PASSES 1|2]
+   !>  [NORMALS Facet|Smoothed]`.
    !> MU gives Coulomb friction (MU 0 or LAW Frictionless: frictionless, EPST not needed).
    subroutine read_contact_pairs(reader, model)
       type(reader_t), intent(inout) :: reader
@@ -1745,7 +1746,7 @@ contains
       real(dp), allocatable :: law_values(:)
       real(dp) :: eps_n, eps_t, gap_tolerance, mu, length
       integer :: i, position, k, law_token, passes
-      logical :: ok, has_eps_n, has_eps_t, has_mu, has_point, has_normal
+      logical :: ok, has_eps_n, has_eps_t, has_mu, has_point, has_normal, smoothed
       allocate (model%contact_pairs(0))
       do i = reader%first(s_contact), reader%last(s_contact)
          associate (line => reader%lines(i))
@@ -1787,6 +1788,7 @@ contains
             has_point = .false.; has_normal = .false.
             eps_n = 0.0_dp; eps_t = 0.0_dp; mu = 0.0_dp; gap_tolerance = 0.0_dp
             passes = 1
+            smoothed = .false.
             law_keyword = ''
             law_token = 0
             pair%plane_point = 0.0_dp
@@ -1824,9 +1826,26 @@ contains
                case ('LAW')
                   law_token = position
                   call reader%take_word(line, position, 'a friction law', law_keyword, ok)
+               case ('NORMALS')
+                  call reader%take_word(line, position, 'Facet or Smoothed', word, ok)
+                  if (ok) then
+                     select case (to_upper(word))
+                     case ('FACET')
+                        smoothed = .false.
+                     case ('SMOOTHED')
+                        smoothed = .true.
+                     case default
+                        call reader%report(line, position - 1, 'NORMALS must be Facet or Smoothed')
+                        ok = .false.
+                     end select
+                  end if
+                  if (ok .and. smoothed .and. pair%master_surface == 0) then
+                     call reader%report(line, position - 1, 'NORMALS Smoothed needs a deformable master surface')
+                     ok = .false.
+                  end if
                case default
                   call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
-                                     'EPSN, EPST, MU, LAW, GAPTOL or PASSES)')
+                                     'EPSN, EPST, MU, LAW, GAPTOL, PASSES or NORMALS)')
                   ok = .false.
                end select
             end do
@@ -1878,6 +1897,7 @@ contains
                deallocate (law_error)
                cycle
             end if
+            pair%parameters%smoothed_normals = smoothed
             pair%passes = passes
             pair%line = i
             model%contact_pairs = [model%contact_pairs, pair]

@@ -6,13 +6,14 @@ module test_contact_fixtures
    use frix_strings, only: to_string
    use frix_coulomb_friction, only: new_coulomb_friction
    use frix_contact_parameters, only: contact_parameters_t
-   use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact
+   use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, patch_normals, &
+                                  smooth_normal_at
    use frix_face_projection, only: face_position, face_normal
    implicit none
    private
 
    public :: warped_face, flat_face, make_parameters, check_face_tangent, check_plane_tangent
-   public :: asymmetry, slave_below
+   public :: asymmetry, slave_below, grid_patch, slave_below_smoothed
 
    !> A warped, skewed face (no two edges parallel, nodes not coplanar), counter-clockwise
    !> seen from +z: outward normal roughly +z. Size about 2.
@@ -57,29 +58,102 @@ contains
       asymmetry = maxval(abs(tangent - transpose(tangent)))/maxval(abs(tangent))
    end function asymmetry
 
+   !> The patch of face (i, j) (i, j = 1..3) of a curved, irregular 4 x 4 node grid of 3 x 3
+   !> faces (counter-clockwise seen from +z, outward normal roughly +z, unit spacing): the
+   !> face's nodes, the other nodes of the faces sharing a node with it (x_ring) and those
+   !> faces in local node numbers (1-4 the face's, 4 + k x_ring(:, k)), as node_face_contact
+   !> takes them for smoothed normals. Face (2, 2) has the full ring of 12 nodes; a face on
+   !> the grid's border has a smaller one. The surface z = 0.15 (x - 1.5)^2 - 0.1 (y - 1.5)^2
+   !> + 0.05 x y, with x, y perturbed by up to 0.07, makes the averaged nodal normals differ
+   !> from every facet normal.
+   subroutine grid_patch(i, j, x_face, x_ring, patch_faces)
+      integer, intent(in) :: i, j
+      real(dp), intent(out) :: x_face(3, 4)
+      real(dp), allocatable, intent(out) :: x_ring(:, :)
+      integer, allocatable, intent(out) :: patch_faces(:, :)
+      integer, allocatable :: ring(:)
+      integer :: gi, gj, b, k, corner(4), nodes(4)
+      allocate (ring(0), patch_faces(4, 0))
+      corner = face_corners(i, j)
+      do gj = max(1, j - 1), min(3, j + 1)
+         do gi = max(1, i - 1), min(3, i + 1)
+            nodes = face_corners(gi, gj)
+            do b = 1, 4
+               if (all(corner /= nodes(b)) .and. all(ring /= nodes(b))) ring = [ring, nodes(b)]
+            end do
+            patch_faces = reshape([reshape(patch_faces, [size(patch_faces)]), (local(nodes(b)), b=1, 4)], &
+                                  [4, size(patch_faces, 2) + 1])
+         end do
+      end do
+      do b = 1, 4
+         x_face(:, b) = grid_point(corner(b))
+      end do
+      allocate (x_ring(3, size(ring)))
+      do k = 1, size(ring)
+         x_ring(:, k) = grid_point(ring(k))
+      end do
+   contains
+      !> Nodes of face (fi, fj), numbered n = 1 + gi + 4 gj for grid point (gi, gj), gi, gj = 0..3.
+      pure function face_corners(fi, fj) result(nodes)
+         integer, intent(in) :: fi, fj
+         integer :: nodes(4)
+         nodes = [fi + 4*(fj - 1), fi + 1 + 4*(fj - 1), fi + 1 + 4*fj, fi + 4*fj]
+      end function face_corners
+      integer function local(n)
+         integer, intent(in) :: n
+         local = findloc(corner, n, dim=1)
+         if (local == 0) local = 4 + findloc(ring, n, dim=1)
+      end function local
+      pure function grid_point(n) result(x)
+         integer, intent(in) :: n
+         real(dp) :: x(3), gx, gy
+         gx = real(mod(n - 1, 4), dp)
+         gy = real((n - 1)/4, dp)
+         x(1) = gx + 0.07_dp*sin(1.3_dp*gx + 0.4_dp*gy)
+         x(2) = gy + 0.05_dp*cos(0.7_dp*gx + 1.1_dp*gy)
+         x(3) = 0.15_dp*(x(1) - 1.5_dp)**2 - 0.1_dp*(x(2) - 1.5_dp)**2 + 0.05_dp*x(1)*x(2)
+      end function grid_point
+   end subroutine grid_patch
+
+   !> The point at depth `depth` below x(xi) along the smoothed normal there: its projection
+   !> along the smoothed normals is xi.
+   function slave_below_smoothed(x_face, x_ring, patch_faces, xi, depth) result(point)
+      real(dp), intent(in) :: x_face(3, 4), x_ring(:, :), xi(2), depth
+      integer, intent(in) :: patch_faces(:, :)
+      real(dp) :: point(3)
+      point = face_position(x_face, xi) - depth*smooth_normal_at(patch_normals(x_face, x_ring, patch_faces), xi)
+   end function slave_below_smoothed
+
    !> Tangent of node_face_contact against central differences of fint, all 15 unknowns (27
-   !> with an anchor on another face, x_anchor_face); fails if the status (or the clamped flag)
+   !> with an anchor on another face, x_anchor_face; 3 more per ring node with smoothed
+   !> normals, x_ring and patch_faces); fails if the status (or the clamped flag)
    !> differs from `expected_status` at the base point or at any perturbed point (the
    !> difference must not cross a branch).
    subroutine check_face_tangent(error, parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                 expected_status, tangent, x_anchor_face)
+                                 expected_status, tangent, x_anchor_face, x_ring, patch_faces)
       type(error_t), allocatable, intent(out) :: error
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3), x_master(3, 4), area, anchor_xi(2)
       logical, intent(in) :: has_anchor, clamp
       integer, intent(in) :: expected_status
-      real(dp), intent(out) :: tangent(:, :)   !! (15, 15), or (27, 27) with x_anchor_face
+      !> (n, n), n = 15, + 12 with x_anchor_face, + 3 size(x_ring, 2) with smoothed normals
+      real(dp), intent(out) :: tangent(:, :)
       real(dp), intent(in), optional :: x_anchor_face(3, 4)
+      real(dp), intent(in), optional :: x_ring(:, :)
+      integer, intent(in), optional :: patch_faces(:, :)
       type(contact_point_result_t) :: base, plus, minus
       real(dp), allocatable :: q(:), qp(:), fint(:), f_plus(:), f_minus(:), k_other(:, :), column(:)
       real(dp) :: h, scale, worst
-      integer :: j, n
+      integer :: j, n, ring_first
 
       n = merge(27, 15, present(x_anchor_face))
+      ring_first = n + 1
+      if (present(x_ring)) n = n + size(x_ring)
       allocate (q(n), fint(n), f_plus(n), f_minus(n), k_other(n, n), column(n))
       q(1:3) = x_slave
       q(4:15) = reshape(x_master, [12])
       if (present(x_anchor_face)) q(16:27) = reshape(x_anchor_face, [12])
+      if (present(x_ring)) q(ring_first:) = reshape(x_ring, [size(x_ring)])
       h = relative_step*maxval(abs(x_master))
       call evaluate(q, base, fint, tangent)
       if (base%status /= expected_status) then
@@ -115,13 +189,13 @@ contains
          real(dp), intent(in) :: unknowns(:)
          type(contact_point_result_t), intent(out) :: result
          real(dp), intent(out) :: force(:), stiffness(:, :)
-         if (present(x_anchor_face)) then
-            call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
-                                   has_anchor, clamp, result, force, stiffness, reshape(unknowns(16:27), [3, 4]))
-         else
-            call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
-                                   has_anchor, clamp, result, force, stiffness)
-         end if
+         ! unallocated: absent
+         real(dp), allocatable :: anchor_face(:, :), ring(:, :)
+         if (present(x_anchor_face)) anchor_face = reshape(unknowns(16:27), [3, 4])
+         if (present(x_ring)) ring = reshape(unknowns(ring_first:), [3, size(x_ring, 2)])
+         call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
+                                has_anchor, clamp, result, force, stiffness, x_anchor_face=anchor_face, &
+                                x_ring=ring, patch_faces=patch_faces)
       end subroutine evaluate
    end subroutine check_face_tangent
 

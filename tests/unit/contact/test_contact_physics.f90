@@ -11,7 +11,11 @@
 !>     large sliding);
 !>   - beyond an edge without clamp the kernel reports `outside` and gives no force;
 !>   - a friction scale f (the driver's friction continuation) gives exactly the response with
-!>     mu replaced by f mu, on a face and on a plane, in slip and where it turns slip into stick.
+!>     mu replaced by f mu, on a face and on a plane, in slip and where it turns slip into stick;
+!>   - smoothed normals: on a flat patch they give the facet formulation's forces; on a curved
+!>     patch the normal, gap and pressure of a slave below a point of an edge shared by two
+!>     faces are the same whichever face it is evaluated on (the facet normals differ there),
+!>     and the contact point is the normal projection (x_s - x(xi) parallel to n(xi)).
 module test_contact_physics
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -21,7 +25,10 @@ module test_contact_physics
                                   contact_open, contact_stick, contact_slip
    use frix_contact_parameters, only: contact_parameters_t
    use frix_face_projection, only: face_position
-   use test_contact_fixtures, only: flat_face, warped_face, make_parameters, slave_below
+   use test_contact_fixtures, only: flat_face, warped_face, make_parameters, slave_below, grid_patch, &
+                                    slave_below_smoothed
+   use frix_contact_kernel, only: patch_normals, smooth_normal_at
+   use frix_face_projection, only: face_normal
    implicit none
    private
 
@@ -47,7 +54,9 @@ contains
                new_unittest('rigid plane: normal force, stick and slip', test_plane_physics), &
                new_unittest('separated node: open, anchor = closest point', test_open_anchor), &
                new_unittest('crossing an edge with clamp: force continuous', test_edge_continuity), &
-               new_unittest('friction scale f: the response of f mu', test_friction_scale)]
+               new_unittest('friction scale f: the response of f mu', test_friction_scale), &
+               new_unittest('smoothed normals on a flat patch: the facet forces', test_smoothed_flat), &
+               new_unittest('smoothed normals: continuous across a shared edge', test_smoothed_continuity)]
    end subroutine collect_contact_physics
 
    subroutine test_normal_force(error)
@@ -342,4 +351,72 @@ contains
       end do
    end subroutine test_friction_scale
 
+   !> grid_patch flattened onto z = 0 (still irregular in the plane): every nodal normal is
+   !> +z, so the smoothed kernel gives the facet kernel's status, gap, traction and force (the
+   !> tangents differ: lifting a ring node tilts the nodal normals).
+   subroutine test_smoothed_flat(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_point_result_t) :: facet, smoothed
+      real(dp) :: x_face(3, 4), f_facet(15), k_facet(15, 15), x_slave(3)
+      real(dp), allocatable :: x_ring(:, :), f_smoothed(:), k_smoothed(:, :)
+      integer, allocatable :: patch_faces(:, :)
+      integer :: k
+      real(dp), parameter :: anchors(2, 2) = reshape([0.205_dp, -0.305_dp, 0.3_dp, -0.25_dp], [2, 2])
+      call grid_patch(2, 2, x_face, x_ring, patch_faces)
+      x_face(3, :) = 0.0_dp
+      x_ring(3, :) = 0.0_dp
+      allocate (f_smoothed(15 + size(x_ring)), k_smoothed(15 + size(x_ring), 15 + size(x_ring)))
+      x_slave = slave_below(x_face, [0.2_dp, -0.3_dp], depth)
+      do k = 1, 2   ! stick, then slip
+         call node_face_contact(make_parameters(mu), x_slave, x_face, area, anchors(:, k), .true., .true., &
+                                facet, f_facet, k_facet)
+         call node_face_contact(make_parameters(mu), x_slave, x_face, area, anchors(:, k), .true., .true., &
+                                smoothed, f_smoothed, k_smoothed, x_ring=x_ring, patch_faces=patch_faces)
+         call check(error, facet%status == k .and. smoothed%status == k, 'status stick, then slip')
+         if (allocated(error)) return
+         call check(error, maxval(abs(f_smoothed(:15) - f_facet)) <= 1.0e-12_dp*maxval(abs(f_facet)) .and. &
+                    all(f_smoothed(16:) == 0.0_dp) .and. abs(smoothed%gap - facet%gap) <= 1.0e-15_dp .and. &
+                    maxval(abs(smoothed%traction - facet%traction)) <= 1.0e-12_dp*norm2(facet%traction), &
+                    'smoothed = facet on a flat patch: force difference '// &
+                    to_string(maxval(abs(f_smoothed(:15) - f_facet))))
+         if (allocated(error)) return
+      end do
+   end subroutine test_smoothed_flat
+
+   !> The edge xi1 = +1 of face (2, 2) is the edge xi1 = -1 of face (3, 2) (same nodes, same
+   !> direction of xi2). At xi2 = 0.4 on it the facet normals of the two faces differ; the
+   !> smoothed normals, and a slave's gap and pressure, do not (to round-off). The kernel finds
+   !> the slave's projection point (the xi it was placed below).
+   subroutine test_smoothed_continuity(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_point_result_t) :: left, right
+      real(dp) :: x_left(3, 4), x_right(3, 4), x_slave(3), normal_left(3), normal_right(3)
+      real(dp), allocatable :: ring_left(:, :), ring_right(:, :), f_left(:), k_left(:, :), f_right(:), k_right(:, :)
+      integer, allocatable :: patch_left(:, :), patch_right(:, :)
+      call grid_patch(2, 2, x_left, ring_left, patch_left)
+      call grid_patch(3, 2, x_right, ring_right, patch_right)
+      call check(error, norm2(face_normal(x_left, [1.0_dp, 0.4_dp]) - face_normal(x_right, [-1.0_dp, 0.4_dp])) > 1.0e-2_dp, &
+                 'the facet normals should differ on the edge')
+      if (allocated(error)) return
+      normal_left = smooth_normal_at(patch_normals(x_left, ring_left, patch_left), [1.0_dp, 0.4_dp])
+      normal_right = smooth_normal_at(patch_normals(x_right, ring_right, patch_right), [-1.0_dp, 0.4_dp])
+      call check(error, norm2(normal_left - normal_right) <= 1.0e-14_dp, 'smoothed normals on the edge differ by '// &
+                 to_string(norm2(normal_left - normal_right)))
+      if (allocated(error)) return
+      x_slave = slave_below_smoothed(x_left, ring_left, patch_left, [1.0_dp, 0.4_dp], depth)
+      allocate (f_left(15 + size(ring_left)), k_left(15 + size(ring_left), 15 + size(ring_left)))
+      allocate (f_right(15 + size(ring_right)), k_right(15 + size(ring_right), 15 + size(ring_right)))
+      call node_face_contact(make_parameters(mu), x_slave, x_left, area, [0.99_dp, 0.41_dp], .true., .true., &
+                             left, f_left, k_left, x_ring=ring_left, patch_faces=patch_left)
+      call node_face_contact(make_parameters(mu), x_slave, x_right, area, [-1.01_dp, 0.41_dp], .true., .true., &
+                             right, f_right, k_right, x_ring=ring_right, patch_faces=patch_right)
+      call check(error, .not. left%clamped .and. .not. right%clamped .and. &
+                 maxval(abs(left%xi - [1.0_dp, 0.4_dp])) <= 1.0e-10_dp .and. &
+                 maxval(abs(right%xi - [-1.0_dp, 0.4_dp])) <= 1.0e-10_dp, 'projection onto the edge point from both faces')
+      if (allocated(error)) return
+      call check(error, abs(left%gap + depth) <= 1.0e-12_dp .and. abs(right%gap + depth) <= 1.0e-12_dp .and. &
+                 norm2(left%normal - right%normal) <= 1.0e-12_dp .and. &
+                 abs(left%pressure - right%pressure) <= 1.0e-8_dp*left%pressure, &
+                 'gap, normal and pressure from the two faces: '//to_string(left%gap)//' '//to_string(right%gap))
+   end subroutine test_smoothed_continuity
 end module test_contact_physics

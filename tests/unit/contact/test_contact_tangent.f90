@@ -13,7 +13,7 @@ module test_contact_tangent
                                   node_face_contact
    use frix_face_projection, only: face_position, face_normal, face_shape_functions
    use test_contact_fixtures, only: warped_face, make_parameters, check_face_tangent, check_plane_tangent, &
-                                    asymmetry, slave_below
+                                    asymmetry, slave_below, grid_patch, slave_below_smoothed
    implicit none
    private
 
@@ -46,6 +46,13 @@ contains
                new_unittest('anchor on the neighbouring face, slip', test_other_face_slip), &
                new_unittest('anchor on the neighbouring face: stick commits its projection', &
                             test_other_face_commit), &
+               new_unittest('smoothed normals, inside, stick', test_smoothed_stick), &
+               new_unittest('smoothed normals, inside, slip', test_smoothed_slip), &
+               new_unittest('smoothed normals, inside, frictionless', test_smoothed_frictionless), &
+               new_unittest('smoothed normals, near an edge (xi = 0.95), slip', test_smoothed_edge_slip), &
+               new_unittest('smoothed normals, border face, clamped beyond its free edge, slip', &
+                            test_smoothed_clamped), &
+               new_unittest('smoothed normals, anchor on the neighbouring face, stick', test_smoothed_other_face), &
                new_unittest('rigid plane, stick (symmetric)', test_plane_stick), &
                new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip)]
    end subroutine collect_contact_tangent
@@ -184,6 +191,75 @@ contains
       call check(error, result%slip_increment == 0.0_dp .and. all(fint(16:27) == 0.0_dp), &
                  'no slip counted in stick, no force on the anchor face')
    end subroutine test_other_face_commit
+
+   !> Smoothed normals on face (2, 2) of grid_patch (12 ring nodes, 51 unknowns): the slave
+   !> at depth 0.01 below x(xi) along the smoothed normal, the anchor near (stick) or far
+   !> (slip); the ring nodes must enter the tangent.
+   subroutine check_smoothed(error, coefficient, xi, anchor_xi, expected_status, i, clamp)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in) :: coefficient, xi(2), anchor_xi(2)
+      integer, intent(in) :: expected_status, i
+      logical, intent(in) :: clamp
+      real(dp) :: x_face(3, 4)
+      real(dp), allocatable :: x_ring(:, :), tangent(:, :)
+      integer, allocatable :: patch_faces(:, :)
+      integer :: n
+      call grid_patch(i, 2, x_face, x_ring, patch_faces)
+      n = 15 + size(x_ring)
+      allocate (tangent(n, n))
+      call check_face_tangent(error, make_parameters(coefficient), &
+                              slave_below_smoothed(x_face, x_ring, patch_faces, xi, depth), x_face, area, anchor_xi, &
+                              .true., clamp, expected_status, tangent, x_ring=x_ring, patch_faces=patch_faces)
+      if (allocated(error)) return
+      call check(error, maxval(abs(tangent(:, 16:))) > 1.0e-3_dp*maxval(abs(tangent)), &
+                 'the ring nodes should enter the tangent, max '//to_string(maxval(abs(tangent(:, 16:)))))
+   end subroutine check_smoothed
+
+   subroutine test_smoothed_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_smoothed(error, mu, [0.2_dp, -0.3_dp], [0.205_dp, -0.305_dp], contact_stick, 2, .false.)
+   end subroutine test_smoothed_stick
+
+   subroutine test_smoothed_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_smoothed(error, mu, [0.2_dp, -0.3_dp], [0.3_dp, -0.25_dp], contact_slip, 2, .false.)
+   end subroutine test_smoothed_slip
+
+   subroutine test_smoothed_frictionless(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_smoothed(error, 0.0_dp, [0.2_dp, -0.3_dp], [0.3_dp, -0.25_dp], contact_slip, 2, .false.)
+   end subroutine test_smoothed_frictionless
+
+   subroutine test_smoothed_edge_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_smoothed(error, mu, [0.95_dp, 0.4_dp], [0.85_dp, 0.45_dp], contact_slip, 2, .false.)
+   end subroutine test_smoothed_edge_slip
+
+   !> Face (1, 2) lies on the grid's border x = 0 (its edge xi1 = -1 is free, 6 ring nodes):
+   !> a slave 0.05 beyond that edge is clamped onto it.
+   subroutine test_smoothed_clamped(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check_smoothed(error, mu, [-1.05_dp, 0.3_dp], [-0.9_dp, 0.35_dp], contact_slip, 1, .true.)
+   end subroutine test_smoothed_clamped
+
+   !> A node that slid from face (3, 2) onto face (2, 2): 3 (1 + 4 + 4 + 12) = 63 unknowns,
+   !> the largest kernel.
+   subroutine test_smoothed_other_face(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: x_face(3, 4), x_neighbour(3, 4)
+      real(dp), allocatable :: x_ring(:, :), other_ring(:, :), tangent(:, :)
+      integer, allocatable :: patch_faces(:, :), other_patch(:, :)
+      call grid_patch(2, 2, x_face, x_ring, patch_faces)
+      call grid_patch(3, 2, x_neighbour, other_ring, other_patch)
+      allocate (tangent(63, 63))
+      call check_face_tangent(error, make_parameters(mu), &
+                              slave_below_smoothed(x_face, x_ring, patch_faces, [0.99_dp, 0.4_dp], depth), x_face, &
+                              area, [-0.995_dp, 0.4_dp], .true., .false., contact_stick, tangent, &
+                              x_anchor_face=x_neighbour, x_ring=x_ring, patch_faces=patch_faces)
+      if (allocated(error)) return
+      call check(error, maxval(abs(tangent(:, 16:27))) > 1.0e-2_dp*maxval(abs(tangent)), &
+                 'the anchor face nodes should enter the tangent')
+   end subroutine test_smoothed_other_face
 
    subroutine test_plane_stick(error)
       type(error_t), allocatable, intent(out) :: error
