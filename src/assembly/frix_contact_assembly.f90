@@ -25,7 +25,7 @@
 module frix_contact_assembly
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_mesh, only: hex8_face_nodes
+   use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
    use frix_model, only: model_t
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_surface_load, only: face_area_weights
@@ -43,7 +43,7 @@ module frix_contact_assembly
    public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
    public :: contact_history_rows, get_contact_history, set_contact_history
-   public :: reset_friction_branches, release_inconsistent_branches
+   public :: reset_friction_branches, release_inconsistent_branches, largest_patch_ring
 
    !> One pass: the nodes of a slave surface against the faces of a master surface or a plane.
    type :: contact_pass_t
@@ -171,11 +171,9 @@ contains
          allocate (pass%faces(4, 0))
       else
          associate (surface => model%mesh%surfaces(master_surface))
-            allocate (pass%faces(4, size(surface%elements)))
+            pass%faces = surface_faces(model%mesh, surface)
             size_sum = 0.0_dp
             do k = 1, size(surface%elements)
-               pass%faces(:, k) = model%mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), &
-                                                          surface%elements(k))
                coords = model%mesh%coords(:, pass%faces(:, k))
                size_sum = size_sum + 0.5_dp*(norm2(coords(:, 3) - coords(:, 1)) + &
                                              norm2(coords(:, 4) - coords(:, 2)))/sqrt(2.0_dp)
@@ -200,39 +198,69 @@ contains
       call initial_anchors(model, pass)
    end subroutine setup_pass
 
-   !> The smoothed-normal patch of every master face: the faces that share a node with it.
+   !> The smoothed-normal patches of a pass's master faces; an error if a face has more ring
+   !> nodes than the kernel takes (the deck reader reports it first, at the NORMALS keyword).
    subroutine build_patches(model, pass, error)
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: node_start(:), node_faces(:), fill(:), adjacent(:), local(:, :), ring(:), grown(:, :)
+      integer :: f
+      call surface_patches(model%mesh%n_nodes, pass%faces, pass%ring_start, pass%ring_nodes, &
+                           pass%patch_start, pass%patch_faces)
+      pass%smooth = .true.
+      if (size(pass%faces, 2) == 0) return
+      f = largest_ring_face(pass%ring_start)
+      if (pass%ring_start(f + 1) - pass%ring_start(f) > max_ring_nodes) &
+         call fatal_error(error, 'contact pair '//to_string(model%contact_pairs(pass%pair)%id)// &
+                          ': NORMALS Smoothed: a master face has '// &
+                          to_string(pass%ring_start(f + 1) - pass%ring_start(f))//' nodes around it, at most '// &
+                          to_string(max_ring_nodes)//' are supported')
+   end subroutine build_patches
+
+   !> The face whose ring (surface_patches) has the most nodes (1 for no face).
+   pure integer function largest_ring_face(ring_start) result(f)
+      integer, intent(in) :: ring_start(:)
+      f = 1
+      if (size(ring_start) > 1) f = maxloc(ring_start(2:) - ring_start(:size(ring_start) - 1), dim=1)
+   end function largest_ring_face
+
+   !> The smoothed-normal patch of every face of a surface (faces(4, n), mesh node numbers):
+   !> the faces that share a node with it. ring_nodes(ring_start(f) + 1 : ring_start(f + 1)) are
+   !> the patch's nodes other than face f's own; patch_faces(:, patch_start(f) + 1 :
+   !> patch_start(f + 1)) its faces (f among them) in local node numbers (1-4 face f's nodes,
+   !> 4 + j ring node j), as node_face_contact takes them.
+   pure subroutine surface_patches(n_nodes, faces, ring_start, ring_nodes, patch_start, patch_faces)
+      integer, intent(in) :: n_nodes          !! nodes of the mesh
+      integer, intent(in) :: faces(:, :)      !! (4, n_faces)
+      integer, allocatable, intent(out) :: ring_start(:), ring_nodes(:), patch_start(:), patch_faces(:, :)
+      integer, allocatable :: node_start(:), node_faces(:), fill(:), adjacent(:), local(:, :), ring(:)
+      integer, allocatable :: grown(:, :), grown_ring(:)
       integer :: n_faces, f, g, a, b, k, node, n_adjacent, n_ring, position
-      n_faces = size(pass%faces, 2)
+      n_faces = size(faces, 2)
       ! faces around each node, compressed rows over the mesh's nodes
-      allocate (node_start(model%mesh%n_nodes + 1), source=0)
+      allocate (node_start(n_nodes + 1), source=0)
       do f = 1, n_faces
-         node_start(pass%faces(:, f) + 1) = node_start(pass%faces(:, f) + 1) + 1
+         node_start(faces(:, f) + 1) = node_start(faces(:, f) + 1) + 1
       end do
-      do node = 1, model%mesh%n_nodes
+      do node = 1, n_nodes
          node_start(node + 1) = node_start(node + 1) + node_start(node)
       end do
-      allocate (node_faces(node_start(model%mesh%n_nodes + 1)))
-      fill = node_start(:model%mesh%n_nodes)
+      allocate (node_faces(node_start(n_nodes + 1)))
+      fill = node_start(:n_nodes)
       do f = 1, n_faces
          do a = 1, 4
-            fill(pass%faces(a, f)) = fill(pass%faces(a, f)) + 1
-            node_faces(fill(pass%faces(a, f))) = f
+            fill(faces(a, f)) = fill(faces(a, f)) + 1
+            node_faces(fill(faces(a, f))) = f
          end do
       end do
-      pass%smooth = .true.
-      allocate (pass%ring_start(n_faces + 1), pass%patch_start(n_faces + 1))
-      allocate (pass%ring_nodes(max_ring_nodes*n_faces), pass%patch_faces(4, 9*n_faces))
-      pass%ring_start(1) = 0
-      pass%patch_start(1) = 0
+      allocate (ring_start(n_faces + 1), patch_start(n_faces + 1))
+      allocate (ring_nodes(max(1, max_ring_nodes*n_faces)), patch_faces(4, max(1, 9*n_faces)))
+      ring_start(1) = 0
+      patch_start(1) = 0
       do f = 1, n_faces
          allocate (adjacent(0), ring(0))
          do a = 1, 4
-            node = pass%faces(a, f)
+            node = faces(a, f)
             do k = node_start(node) + 1, node_start(node + 1)
                if (all(adjacent /= node_faces(k))) adjacent = [adjacent, node_faces(k)]
             end do
@@ -241,8 +269,8 @@ contains
          allocate (local(4, n_adjacent))
          do g = 1, n_adjacent
             do b = 1, 4
-               node = pass%faces(b, adjacent(g))
-               position = findloc(pass%faces(:, f), node, dim=1)
+               node = faces(b, adjacent(g))
+               position = findloc(faces(:, f), node, dim=1)
                if (position == 0) then
                   position = findloc(ring, node, dim=1)
                   if (position == 0) then
@@ -255,30 +283,54 @@ contains
             end do
          end do
          n_ring = size(ring)
-         if (n_ring > max_ring_nodes) then
-            call fatal_error(error, 'contact pair '//to_string(model%contact_pairs(pass%pair)%id)// &
-                             ' (deck line '//to_string(model%contact_pairs(pass%pair)%line)// &
-                             '): NORMALS Smoothed: the master face of nodes '// &
-                             to_string(model%mesh%node_ids(pass%faces(1, f)))//' '// &
-                             to_string(model%mesh%node_ids(pass%faces(2, f)))//' '// &
-                             to_string(model%mesh%node_ids(pass%faces(3, f)))//' '// &
-                             to_string(model%mesh%node_ids(pass%faces(4, f)))//' has '//to_string(n_ring)// &
-                             ' nodes around it, at most '//to_string(max_ring_nodes)// &
-                             ' are supported (4 faces at each of its nodes)')
-            return
+         if (ring_start(f) + n_ring > size(ring_nodes)) then
+            allocate (grown_ring(2*(ring_start(f) + n_ring)))
+            grown_ring(:ring_start(f)) = ring_nodes(:ring_start(f))
+            call move_alloc(grown_ring, ring_nodes)
          end if
-         pass%ring_nodes(pass%ring_start(f) + 1:pass%ring_start(f) + n_ring) = ring
-         pass%ring_start(f + 1) = pass%ring_start(f) + n_ring
-         if (pass%patch_start(f) + n_adjacent > size(pass%patch_faces, 2)) then
-            allocate (grown(4, 2*(pass%patch_start(f) + n_adjacent)))
-            grown(:, :pass%patch_start(f)) = pass%patch_faces(:, :pass%patch_start(f))
-            call move_alloc(grown, pass%patch_faces)
+         ring_nodes(ring_start(f) + 1:ring_start(f) + n_ring) = ring
+         ring_start(f + 1) = ring_start(f) + n_ring
+         if (patch_start(f) + n_adjacent > size(patch_faces, 2)) then
+            allocate (grown(4, 2*(patch_start(f) + n_adjacent)))
+            grown(:, :patch_start(f)) = patch_faces(:, :patch_start(f))
+            call move_alloc(grown, patch_faces)
          end if
-         pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f) + n_adjacent) = local
-         pass%patch_start(f + 1) = pass%patch_start(f) + n_adjacent
+         patch_faces(:, patch_start(f) + 1:patch_start(f) + n_adjacent) = local
+         patch_start(f + 1) = patch_start(f) + n_adjacent
          deallocate (adjacent, ring, local)
       end do
-   end subroutine build_patches
+   end subroutine surface_patches
+
+   !> The faces of a surface of HEX8 element faces, as (4, n) mesh node numbers in outward
+   !> (HEX8 face) order.
+   pure function surface_faces(mesh, surface) result(faces)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      integer :: faces(4, size(surface%elements))
+      integer :: k
+      do k = 1, size(surface%elements)
+         faces(:, k) = mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), surface%elements(k))
+      end do
+   end function surface_faces
+
+   !> The master surface's largest smoothed-normal ring: its size and the face that has it
+   !> (for the deck reader's check of NORMALS Smoothed against max_ring_nodes).
+   subroutine largest_patch_ring(mesh, surface, n_ring, face_nodes)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      integer, intent(out) :: n_ring          !! ring nodes of that face
+      integer, intent(out) :: face_nodes(4)   !! mesh node numbers of that face
+      integer, allocatable :: faces(:, :), ring_start(:), ring_nodes(:), patch_start(:), patch_faces(:, :)
+      integer :: f
+      n_ring = 0
+      face_nodes = 0
+      if (size(surface%elements) == 0) return
+      faces = surface_faces(mesh, surface)
+      call surface_patches(mesh%n_nodes, faces, ring_start, ring_nodes, patch_start, patch_faces)
+      f = largest_ring_face(ring_start)
+      n_ring = ring_start(f + 1) - ring_start(f)
+      face_nodes = faces(:, f)
+   end subroutine largest_patch_ring
 
    !> Anchors of the reference configuration: every slave node starts with the closest point
    !> of its reference position on the master (its foot point on the plane, or on the nearest

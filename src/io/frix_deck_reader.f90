@@ -24,6 +24,8 @@ module frix_deck_reader
    use frix_friction_law, only: friction_law_t
    use frix_friction_law_registry, only: create_friction_law
    use frix_contact_parameters, only: new_contact_parameters
+   use frix_contact_kernel, only: max_ring_nodes
+   use frix_contact_assembly, only: largest_patch_ring
    use frix_model, only: contact_pair_t, model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t, &
                          load_curve_t, step_t, history_request_t, solver_auto, solver_cholmod, &
                          solver_umfpack, curve_factor
@@ -1745,7 +1747,7 @@ contains
       character(len=8), allocatable :: law_names(:)
       real(dp), allocatable :: law_values(:)
       real(dp) :: eps_n, eps_t, gap_tolerance, mu, length
-      integer :: i, position, k, law_token, passes
+      integer :: i, position, k, law_token, passes, normals_token, n_ring, face_nodes(4)
       logical :: ok, has_eps_n, has_eps_t, has_mu, has_point, has_normal, smoothed
       allocate (model%contact_pairs(0))
       do i = reader%first(s_contact), reader%last(s_contact)
@@ -1827,6 +1829,7 @@ contains
                   law_token = position
                   call reader%take_word(line, position, 'a friction law', law_keyword, ok)
                case ('NORMALS')
+                  normals_token = position
                   call reader%take_word(line, position, 'Facet or Smoothed', word, ok)
                   if (ok) then
                      select case (to_upper(word))
@@ -1896,6 +1899,20 @@ contains
                call reader%report(line, 1, law_error%message)
                deallocate (law_error)
                cycle
+            end if
+            if (smoothed) then
+               ! the kernel's unknowns bound the nodes around a master face (docs/contact.md)
+               call largest_patch_ring(model%mesh, model%mesh%surfaces(pair%master_surface), n_ring, face_nodes)
+               if (n_ring > max_ring_nodes) then
+                  call reader%report(line, normals_token, 'NORMALS Smoothed: the master face of nodes '// &
+                                     to_string(model%mesh%node_ids(face_nodes(1)))//' '// &
+                                     to_string(model%mesh%node_ids(face_nodes(2)))//' '// &
+                                     to_string(model%mesh%node_ids(face_nodes(3)))//' '// &
+                                     to_string(model%mesh%node_ids(face_nodes(4)))//' has '// &
+                                     to_string(n_ring)//' nodes around it, at most '// &
+                                     to_string(max_ring_nodes)//' are supported (4 faces at each of its nodes)')
+                  cycle
+               end if
             end if
             pair%parameters%smoothed_normals = smoothed
             pair%passes = passes
