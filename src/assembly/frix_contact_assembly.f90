@@ -340,9 +340,9 @@ contains
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
       real(dp), allocatable :: zero(:)
-      real(dp) :: x_slave(3), normal(3)
-      logical :: fixed(2)
-      integer :: i
+      real(dp) :: x_slave(3), normal(3), xi(2), jacobian(2, 2)
+      logical :: fixed(2), converged
+      integer :: i, f
       associate (pair => model%contact_pairs(pass%pair))
          if (pass%rigid) then
             normal = pair%plane_normal
@@ -360,6 +360,20 @@ contains
          if (pass%face(i) == 0) cycle
          call closest_point_in_face(model%mesh%coords(:, pass%faces(:, pass%face(i))), &
                                     model%mesh%coords(:, pass%slave_nodes(i)), 0.0_dp, pass%anchor_xi(:, i), fixed)
+         if (pass%smooth) then
+            ! the point along the smoothed normal, when it lies on the face
+            f = pass%face(i)
+            call smooth_projection(model%mesh%coords(:, pass%faces(:, f)), &
+                                   patch_normals(model%mesh%coords(:, pass%faces(:, f)), &
+                                                 model%mesh%coords(:, pass%ring_nodes(pass%ring_start(f) + 1: &
+                                                                                      pass%ring_start(f + 1))), &
+                                                 pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1))), &
+                                   model%mesh%coords(:, pass%slave_nodes(i)), xi, converged, jacobian)
+            if (converged) then
+               if (face_contains(xi, model%contact_pairs(pass%pair)%parameters%edge_tolerance)) &
+                  pass%anchor_xi(:, i) = xi
+            end if
+         end if
          pass%anchor_face(i) = pass%face(i)
          pass%has_anchor(i) = .true.
       end do
@@ -448,7 +462,7 @@ contains
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
       real(dp), intent(in) :: u(:)
-      real(dp), allocatable :: lower(:, :), upper(:, :)
+      real(dp), allocatable :: lower(:, :), upper(:, :), node_normal(:, :)
       integer, allocatable :: cell_start(:), cell_faces(:), counts(:)
       real(dp) :: origin(3), cell_size, x_face(3, 4), x_slave(3), xi(2), distance, best
       real(dp) :: gap, closest(3), best_inside
@@ -484,6 +498,16 @@ contains
          do f = 1, size(faces, 2)
             call visit_cells(f, .true.)
          end do
+         if (pass%smooth) then
+            ! the averaged normal of every master node, once per search
+            allocate (node_normal(3, model%mesh%n_nodes), source=0.0_dp)
+            do f = 1, size(faces, 2)
+               node_normal(:, faces(:, f)) = patch_normals(current_face(model, u, faces(:, f)), &
+                                                          current_nodes(model, u, pass%ring_nodes(pass%ring_start(f) + 1: &
+                                                                                                   pass%ring_start(f + 1))), &
+                                                          pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1)))
+            end do
+         end if
 
          do i = 1, size(pass%slave_nodes)
             x_slave = model%mesh%coords(:, pass%slave_nodes(i)) + &
@@ -540,9 +564,7 @@ contains
          logical, intent(out) :: inside
          real(dp) :: nodal(3, 4), xi(2), jacobian(2, 2), offset(3)
          logical :: converged
-         nodal = patch_normals(x_face, &
-                               current_nodes(model, u, pass%ring_nodes(pass%ring_start(f) + 1:pass%ring_start(f + 1))), &
-                               pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1)))
+         nodal = node_normal(:, pass%faces(:, f))
          call smooth_projection(x_face, nodal, x_slave, xi, converged, jacobian)
          inside = converged
          if (converged) inside = face_contains(xi, model%contact_pairs(pass%pair)%parameters%edge_tolerance)

@@ -25,7 +25,10 @@
 !>   Yang, Laursen & Meng, IJNME 62 (2005), and Wriggers 2006, 9.5, for the smoothing idea).
 !>   The contact point xi* is the normal projection along that field, x_s - x(xi*) parallel
 !>   to n(xi*): r_k = d . a_k - (d . n)(n . a_k) = 0 (d = x_s - x(xi), k = 1, 2), solved by
-!>   Newton with the Jacobian of the duals in xi; g = d . n(xi*). The nodes around the face then
+!>   Newton with the Jacobian of the duals in xi; g = d . n(xi*). Where that point lies outside
+!>   the face (or is not found) and `clamp` is set, the facet's clamped closest point (which
+!>   may lie inside the face) is the contact point, with the smoothed normal there; its
+!>   derivative is the facet one. The nodes around the face then
 !>   enter the linearization (up to max_ring_nodes more unknowns), and the tangent is
 !>   unsymmetric also without friction. On a flat surface n(xi) is the facet normal and
 !>   everything equals the facet formulation.
@@ -87,6 +90,8 @@ module frix_contact_kernel
    !> Newton iterations and step tolerance (parent coordinates) of the smoothed-normal projection.
    integer, parameter :: smooth_projection_iterations = 30
    real(dp), parameter :: smooth_projection_tolerance = 1.0e-13_dp
+   !> a step below this that is not half the previous one has reached round-off: converged
+   real(dp), parameter :: stagnation_step = 1.0e-9_dp
 
 contains
 
@@ -205,7 +210,7 @@ contains
       xi = dual_constant(xi_start)
       if (any(fixed)) then
          call edge_point(xs, xm, fixed, xi)
-      else if (smooth) then
+      else if (smooth .and. .not. result%clamped) then
          ! implicit-function derivative of r(xi*, q) = 0: dxi*/dq = -J^{-1} dr/dq
          call smooth_residual(xs, xm, nodal, xi, residual)
          determinant = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
@@ -533,9 +538,10 @@ contains
       logical, intent(out) :: converged
       real(dp), intent(out) :: jacobian(2, 2)
       type(dual_t) :: xi_d(2), residual(2)
-      real(dp) :: step(2), determinant
+      real(dp) :: step(2), determinant, previous_step
       logical :: facet_converged
       integer :: iteration
+      previous_step = huge(1.0_dp)
       call project_onto_face(x_face, point, xi, facet_converged)
       if (.not. facet_converged .or. any(abs(xi) > 2.0_dp)) xi = 0.0_dp
       converged = .false.
@@ -552,9 +558,15 @@ contains
          if (converged .or. iteration > smooth_projection_iterations) return
          step(1) = (jacobian(2, 2)*residual(1)%value - jacobian(1, 2)*residual(2)%value)/determinant
          step(2) = (jacobian(1, 1)*residual(2)%value - jacobian(2, 1)*residual(1)%value)/determinant
+         ! at most half a face per step
+         step = step*min(1.0_dp, 1.0_dp/maxval(abs(step)))
          xi = xi - step
          if (any(abs(xi) > 10.0_dp)) return
-         converged = maxval(abs(step)) < smooth_projection_tolerance
+         ! converged: a step below the tolerance, or steps that stopped shrinking at round-off
+         ! level (far from the origin the residual's round-off exceeds the tolerance)
+         converged = maxval(abs(step)) < smooth_projection_tolerance .or. &
+                     (maxval(abs(step)) < stagnation_step .and. maxval(abs(step)) >= 0.5_dp*previous_step)
+         previous_step = maxval(abs(step))
       end do
    end subroutine smooth_projection
 

@@ -53,6 +53,8 @@ contains
                new_unittest('smoothed normals, border face, clamped beyond its free edge, slip', &
                             test_smoothed_clamped), &
                new_unittest('smoothed normals, anchor on the neighbouring face, stick', test_smoothed_other_face), &
+               new_unittest('smoothed normals, projection beyond the face, facet point inside: clamped', &
+                            test_smoothed_facet_inside), &
                new_unittest('rigid plane, stick (symmetric)', test_plane_stick), &
                new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip)]
    end subroutine collect_contact_tangent
@@ -260,6 +262,36 @@ contains
       call check(error, maxval(abs(tangent(:, 16:27))) > 1.0e-2_dp*maxval(abs(tangent)), &
                  'the anchor face nodes should enter the tangent')
    end subroutine test_smoothed_other_face
+
+   !> A slave 0.06 below the facet point xi = (0.99, 0.99) of face (2, 2) along the FACET
+   !> normal: its projection along the smoothed normals lies beyond the face (xi2 > 1), its
+   !> facet closest point inside. With clamp the kernel uses that facet point (not clamped to
+   !> an edge) with the smoothed normal there, and its tangent is exact (the case found by the
+   !> review of the smoothed normals, met by slaves on the symmetry planes of S3).
+   subroutine test_smoothed_facet_inside(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_point_result_t) :: result
+      real(dp) :: x_face(3, 4)
+      real(dp), allocatable :: x_ring(:, :), tangent(:, :), fint(:)
+      integer, allocatable :: patch_faces(:, :)
+      real(dp) :: x_slave(3)
+      integer :: k
+      real(dp), parameter :: coefficients(2) = [0.0_dp, mu]
+      call grid_patch(2, 2, x_face, x_ring, patch_faces)
+      x_slave = slave_below(x_face, [0.99_dp, 0.99_dp], 0.06_dp)
+      allocate (tangent(15 + size(x_ring), 15 + size(x_ring)), fint(15 + size(x_ring)))
+      call node_face_contact(make_parameters(mu), x_slave, x_face, area, [0.4_dp, 0.3_dp], .true., .true., &
+                             result, fint, tangent, x_ring=x_ring, patch_faces=patch_faces)
+      call check(error, result%clamped .and. all(abs(result%xi - [0.99_dp, 0.99_dp]) < 1.0e-10_dp), &
+                 'clamped at the facet closest point (0.99, 0.99), got '//to_string(result%xi(1))//' '// &
+                 to_string(result%xi(2)))
+      if (allocated(error)) return
+      do k = 1, 2   ! frictionless, then slip
+         call check_face_tangent(error, make_parameters(coefficients(k)), x_slave, x_face, area, [0.4_dp, 0.3_dp], &
+                                 .true., .true., contact_slip, tangent, x_ring=x_ring, patch_faces=patch_faces)
+         if (allocated(error)) return
+      end do
+   end subroutine test_smoothed_facet_inside
 
    subroutine test_plane_stick(error)
       type(error_t), allocatable, intent(out) :: error
