@@ -363,11 +363,7 @@ contains
          if (pass%smooth) then
             ! the point along the smoothed normal, when it lies on the face
             f = pass%face(i)
-            call smooth_projection(model%mesh%coords(:, pass%faces(:, f)), &
-                                   patch_normals(model%mesh%coords(:, pass%faces(:, f)), &
-                                                 model%mesh%coords(:, pass%ring_nodes(pass%ring_start(f) + 1: &
-                                                                                      pass%ring_start(f + 1))), &
-                                                 pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1))), &
+            call smooth_projection(model%mesh%coords(:, pass%faces(:, f)), face_nodal_normals(model, pass, zero, f), &
                                    model%mesh%coords(:, pass%slave_nodes(i)), xi, converged, jacobian)
             if (converged) then
                if (face_contains(xi, model%contact_pairs(pass%pair)%parameters%edge_tolerance)) &
@@ -502,10 +498,7 @@ contains
             ! the averaged normal of every master node, once per search
             allocate (node_normal(3, model%mesh%n_nodes), source=0.0_dp)
             do f = 1, size(faces, 2)
-               node_normal(:, faces(:, f)) = patch_normals(current_face(model, u, faces(:, f)), &
-                                                          current_nodes(model, u, pass%ring_nodes(pass%ring_start(f) + 1: &
-                                                                                                   pass%ring_start(f + 1))), &
-                                                          pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1)))
+               node_normal(:, faces(:, f)) = face_nodal_normals(model, pass, u, f)
             end do
          end if
 
@@ -600,6 +593,19 @@ contains
          index3 = min(n_cells, max(1, int((point - origin)/cell_size) + 1))
       end function cell_of
    end subroutine assign_faces
+
+   !> The averaged nodal normals of master face f's 4 nodes at displacements u (the kernel's
+   !> patch_normals over the face's patch).
+   pure function face_nodal_normals(model, pass, u, f) result(nodal)
+      type(model_t), intent(in) :: model
+      type(contact_pass_t), intent(in) :: pass
+      real(dp), intent(in) :: u(:)
+      integer, intent(in) :: f
+      real(dp) :: nodal(3, 4)
+      nodal = patch_normals(current_face(model, u, pass%faces(:, f)), &
+                            current_nodes(model, u, pass%ring_nodes(pass%ring_start(f) + 1:pass%ring_start(f + 1))), &
+                            pass%patch_faces(:, pass%patch_start(f) + 1:pass%patch_start(f + 1)))
+   end function face_nodal_normals
 
    !> Current coordinates of nodes.
    pure function current_nodes(model, u, nodes) result(x)

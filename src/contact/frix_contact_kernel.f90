@@ -143,9 +143,8 @@ contains
       integer, intent(in), optional :: patch_faces(:, :)
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
-      type(dual_t), allocatable :: xr(:, :)
-      type(dual_t) :: nodal(3, 4), residual(2)
-      real(dp) :: determinant, xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
+      type(dual_t) :: xr(3, max_ring_nodes), nodal(3, 4), residual(2)
+      real(dp) :: inverse(2, 2), xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
       real(dp) :: jacobian(2, 2), nodal_real(3, 4)
       logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face, smooth
       integer :: a, k, n_unknowns, used_branch, ring_first
@@ -200,11 +199,10 @@ contains
          xa = xm
       end if
       if (smooth) then
-         allocate (xr(3, size(x_ring, 2)))
          do a = 1, size(x_ring, 2)
             xr(:, a) = dual_variable(x_ring(:, a), ring_first + 3*(a - 1))
          end do
-         call patch_nodal_normals(xm, xr, patch_faces, nodal)
+         call patch_nodal_normals(xm, xr(:, :size(x_ring, 2)), patch_faces, nodal)
       end if
 
       xi = dual_constant(xi_start)
@@ -213,9 +211,9 @@ contains
       else if (smooth .and. .not. result%clamped) then
          ! implicit-function derivative of r(xi*, q) = 0: dxi*/dq = -J^{-1} dr/dq
          call smooth_residual(xs, xm, nodal, xi, residual)
-         determinant = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
-         xi(1) = xi(1) - (jacobian(2, 2)*residual(1) - jacobian(1, 2)*residual(2))/determinant
-         xi(2) = xi(2) - (jacobian(1, 1)*residual(2) - jacobian(2, 1)*residual(1))/determinant
+         inverse = inverse_2x2(jacobian)
+         xi(1) = xi(1) - (inverse(1, 1)*residual(1) + inverse(1, 2)*residual(2))
+         xi(2) = xi(2) - (inverse(2, 1)*residual(1) + inverse(2, 2)*residual(2))
       else
          do k = 1, dual_newton_iterations
             call newton_step(xs, xm, xi)
@@ -523,10 +521,19 @@ contains
    pure function smooth_normal_at(nodal_real, xi) result(normal)
       real(dp), intent(in) :: nodal_real(3, 4), xi(2)
       real(dp) :: normal(3), shape(4), d_xi(4), d_eta(4)
+      type(dual_t) :: normal_d(3)
       call face_shape_functions(xi, shape, d_xi, d_eta)
-      normal = matmul(nodal_real, shape)
-      normal = normal/norm2(normal)
+      normal_d = smooth_normal(dual_constant(nodal_real), dual_constant(shape))
+      normal = normal_d%value
    end function smooth_normal_at
+
+   !> Inverse of a 2 x 2 matrix (Cramer's rule); the caller makes sure it is regular.
+   pure function inverse_2x2(matrix) result(inverse)
+      real(dp), intent(in) :: matrix(2, 2)
+      real(dp) :: inverse(2, 2)
+      inverse = reshape([matrix(2, 2), -matrix(2, 1), -matrix(1, 2), matrix(1, 1)], [2, 2]) &
+                /(matrix(1, 1)*matrix(2, 2) - matrix(1, 2)*matrix(2, 1))
+   end function inverse_2x2
 
    !> Projection of `point` onto the face along the smoothed normal field of the nodal
    !> normals `nodal_real`: Newton on r(xi) = 0 (smooth_residual) from the facet closest point,
@@ -556,8 +563,7 @@ contains
             return
          end if
          if (converged .or. iteration > smooth_projection_iterations) return
-         step(1) = (jacobian(2, 2)*residual(1)%value - jacobian(1, 2)*residual(2)%value)/determinant
-         step(2) = (jacobian(1, 1)*residual(2)%value - jacobian(2, 1)*residual(1)%value)/determinant
+         step = matmul(inverse_2x2(jacobian), residual%value)
          ! at most half a face per step
          step = step*min(1.0_dp, 1.0_dp/maxval(abs(step)))
          xi = xi - step

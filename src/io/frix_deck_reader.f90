@@ -100,6 +100,7 @@ module frix_deck_reader
       procedure :: take_curve
       procedure :: take_kinematics
       procedure :: take_yes_no
+      procedure :: take_choice
       procedure :: take_node_target
    end type reader_t
 
@@ -373,19 +374,31 @@ contains
       character(len=*), intent(in) :: what
       logical, intent(inout) :: value
       logical, intent(inout) :: ok
-      character(len=:), allocatable :: word
-      call self%take_word(line, position, what//' value', word, ok)
-      if (.not. ok) return
-      select case (to_upper(word))
-      case ('YES')
-         value = .true.
-      case ('NO')
-         value = .false.
-      case default
-         call self%report(line, position - 1, 'expected Yes or No for '//what)
-         ok = .false.
-      end select
+      integer :: choice
+      call self%take_choice(line, position, what//' value', [character(len=3) :: 'YES', 'NO'], &
+                            'expected Yes or No for '//what, choice, ok)
+      if (ok) value = choice == 1
    end subroutine take_yes_no
+
+   !> One word out of `choices` (upper case; the deck's word in any case): its index, or the
+   !> report `message` at the word.
+   subroutine take_choice(self, line, position, what, choices, message, choice, ok)
+      class(reader_t), intent(inout) :: self
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      character(len=*), intent(in) :: what, choices(:), message
+      integer, intent(out) :: choice
+      logical, intent(inout) :: ok
+      character(len=:), allocatable :: word
+      choice = 0
+      call self%take_word(line, position, what, word, ok)
+      if (.not. ok) return
+      choice = findloc(choices, to_upper(word), dim=1)
+      if (choice == 0) then
+         call self%report(line, position - 1, message)
+         ok = .false.
+      end if
+   end subroutine take_choice
 
    !> `SET <node set>` or `NODE <id>` -> internal node numbers.
    subroutine take_node_target(self, model, line, position, nodes, ok)
@@ -1747,7 +1760,7 @@ contains
       character(len=8), allocatable :: law_names(:)
       real(dp), allocatable :: law_values(:)
       real(dp) :: eps_n, eps_t, gap_tolerance, mu, length
-      integer :: i, position, k, law_token, passes, normals_token, n_ring, face_nodes(4)
+      integer :: i, position, k, law_token, passes, normals_token, normals_choice, n_ring, face_nodes(4)
       logical :: ok, has_eps_n, has_eps_t, has_mu, has_point, has_normal, smoothed
       allocate (model%contact_pairs(0))
       do i = reader%first(s_contact), reader%last(s_contact)
@@ -1830,18 +1843,10 @@ contains
                   call reader%take_word(line, position, 'a friction law', law_keyword, ok)
                case ('NORMALS')
                   normals_token = position
-                  call reader%take_word(line, position, 'Facet or Smoothed', word, ok)
-                  if (ok) then
-                     select case (to_upper(word))
-                     case ('FACET')
-                        smoothed = .false.
-                     case ('SMOOTHED')
-                        smoothed = .true.
-                     case default
-                        call reader%report(line, position - 1, 'NORMALS must be Facet or Smoothed')
-                        ok = .false.
-                     end select
-                  end if
+                  call reader%take_choice(line, position, 'Facet or Smoothed', &
+                                          [character(len=8) :: 'FACET', 'SMOOTHED'], &
+                                          'NORMALS must be Facet or Smoothed', normals_choice, ok)
+                  smoothed = normals_choice == 2
                   if (ok .and. smoothed .and. pair%master_surface == 0) then
                      call reader%report(line, position - 1, 'NORMALS Smoothed needs a deformable master surface')
                      ok = .false.
