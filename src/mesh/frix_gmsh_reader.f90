@@ -17,9 +17,18 @@
 !> - other elements in no physical group (lines, points, ... that gmsh writes) are skipped.
 !> Hexahedra are taken as they are: an inverted one (negative Jacobian, e.g. from a mirrored
 !> geometry) is reported by `check_hex8_jacobians`, never silently renumbered here.
-!> Every error names the file and the line: `mesh.msh:17: expected a number, got "abc"`.
+!>
+!> Rejected: a second $MeshFormat, $PhysicalNames, $Entities, $Nodes or $Elements section;
+!> a 4.1 $Entities after $Elements; a physical tag that is not positive (0 is allowed only as
+!> a 2.2 element's "no physical group"); a dimension outside 0..3; a (dim, tag) named twice in
+!> $PhysicalNames; negative counts, counts beyond the lines left in the file, blocks holding
+!> more than their section declares; a section without its $End line; missing, extra or
+!> malformed numbers on a line; coordinates that are not finite numbers (NaN, Inf, 1e400);
+!> duplicate node ids; elements referencing undefined nodes.
+!> Every error names the file, and the line where there is one:
+!> `mesh.msh:17: expected a number, got "abc"`.
 module frix_gmsh_reader
-   use frix_kinds, only: dp
+   use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_text_scanner, only: text_scanner_t, open_text_file
@@ -50,7 +59,6 @@ module frix_gmsh_reader
       integer :: n_nodes = 0
       integer, allocatable :: node_ids(:), node_lines(:)
       real(dp), allocatable :: coords(:, :)
-      logical :: has_nodes = .false., has_elements = .false.
       ! element records kept: hexahedra, and elements of physical groups
       type(integer_list_t) :: record_ids, record_types, record_lines
       type(integer_list_t) :: record_node_first   !! record r: nodes(first(r):first(r+1)-1)
@@ -60,12 +68,14 @@ module frix_gmsh_reader
       ! physical groups met in elements or entities
       type(integer_list_t) :: group_dims, group_tags
       ! $PhysicalNames
-      type(integer_list_t) :: name_dims, name_tags
+      type(integer_list_t) :: name_dims, name_tags, name_lines
       type(name_t), allocatable :: names(:)
       ! 4.1 $Entities: physical tags of entity (dim, tag), by dim 0..3
       type(id_map_t) :: entity_map(0:3)
       type(integer_list_t) :: entity_physical_first(0:3), entity_physicals(0:3)
-      logical :: has_entities = .false.
+      ! line of each section that may appear only once (0: not met)
+      integer :: mesh_format_line = 0, physical_names_line = 0, entities_line = 0
+      integer :: nodes_line = 0, elements_line = 0
    end type raw_mesh_t
 
 contains
@@ -89,45 +99,14 @@ contains
       do while (scanner%next_line())
          if (scanner%is_blank_line()) cycle
          call scanner%next_token(section, found)
-         select case (section)
-         case ('$PhysicalNames')
-            call read_physical_names(scanner, raw, error)
-         case ('$Entities')
-            if (raw%version == 4) then
-               call read_entities(scanner, raw, error)
-            else
-               call skip_section(scanner, section, error)
-            end if
-         case ('$Nodes')
-            if (raw%has_nodes) then
-               call scanner%fail(error, 'a second $Nodes section')
-            else if (raw%version == 2) then
-               call read_nodes_v2(scanner, raw, error)
-            else
-               call read_nodes_v4(scanner, raw, error)
-            end if
-         case ('$Elements')
-            if (raw%has_elements) then
-               call scanner%fail(error, 'a second $Elements section')
-            else if (raw%version == 2) then
-               call read_elements_v2(scanner, raw, error)
-            else
-               call read_elements_v4(scanner, raw, error)
-            end if
-         case default
-            if (section(1:1) == '$') then
-               call skip_section(scanner, section, error)
-            else
-               call scanner%fail(error, 'expected a section such as $Nodes, got "'//shorten(section)//'"')
-            end if
-         end select
+         call read_section(scanner, section, raw, error)
          if (allocated(error)) return
       end do
-      if (.not. raw%has_nodes) then
+      if (raw%nodes_line == 0) then
          call fatal_error(error, path//': no $Nodes section')
          return
       end if
-      if (.not. raw%has_elements) then
+      if (raw%elements_line == 0) then
          call fatal_error(error, path//': no $Elements section')
          return
       end if
@@ -135,6 +114,83 @@ contains
    end subroutine read_gmsh
 
    ! ---- sections ---------------------------------------------------------------------------
+
+   !> Read the section whose first line (the current one) starts with the token `section`.
+   !> $MeshFormat, $PhysicalNames, $Entities, $Nodes and $Elements may appear once each;
+   !> the sections this reader does not use are skipped.
+   subroutine read_section(scanner, section, raw, error)
+      type(text_scanner_t), intent(inout) :: scanner
+      character(len=*), intent(in) :: section
+      type(raw_mesh_t), intent(inout) :: raw
+      type(error_t), allocatable, intent(out) :: error
+      select case (section)
+      case ('$MeshFormat')
+         call claim_section(scanner, section, raw%mesh_format_line, error)
+      case ('$PhysicalNames')
+         call claim_section(scanner, section, raw%physical_names_line, error)
+         if (.not. allocated(error)) call read_physical_names(scanner, raw, error)
+      case ('$Entities')
+         if (raw%version == 4) then
+            call read_entities_section(scanner, raw, error)
+         else
+            call skip_section(scanner, section, error)
+         end if
+      case ('$Nodes')
+         call claim_section(scanner, section, raw%nodes_line, error)
+         if (allocated(error)) return
+         if (raw%version == 2) then
+            call read_nodes_v2(scanner, raw, error)
+         else
+            call read_nodes_v4(scanner, raw, error)
+         end if
+      case ('$Elements')
+         call claim_section(scanner, section, raw%elements_line, error)
+         if (allocated(error)) return
+         if (raw%version == 2) then
+            call read_elements_v2(scanner, raw, error)
+         else
+            call read_elements_v4(scanner, raw, error)
+         end if
+      case default
+         if (index(section, '$End') == 1) then
+            call scanner%fail(error, '"'//shorten(section)//'" outside its section (more entries than declared?)')
+         else if (section(1:1) == '$') then
+            call skip_section(scanner, section, error)
+         else
+            call scanner%fail(error, 'expected a section such as $Nodes, got "'//shorten(section)//'"')
+         end if
+      end select
+   end subroutine read_section
+
+   !> Error if a section that may appear once was met before, on line `first_line` (0: not
+   !> met); else the current line becomes its `first_line`.
+   subroutine claim_section(scanner, section, first_line, error)
+      type(text_scanner_t), intent(inout) :: scanner
+      character(len=*), intent(in) :: section
+      integer, intent(inout) :: first_line
+      type(error_t), allocatable, intent(out) :: error
+      if (first_line /= 0) then
+         call scanner%fail(error, 'a second '//section//' section (the first is on line '//to_string(first_line)//')')
+         return
+      end if
+      first_line = scanner%line_number
+   end subroutine claim_section
+
+   !> 4.1 `$Entities`, once, and before `$Elements`: the physical groups of an element are
+   !> those of its entity, looked up when the element block is read.
+   subroutine read_entities_section(scanner, raw, error)
+      type(text_scanner_t), intent(inout) :: scanner
+      type(raw_mesh_t), intent(inout) :: raw
+      type(error_t), allocatable, intent(out) :: error
+      call claim_section(scanner, '$Entities', raw%entities_line, error)
+      if (allocated(error)) return
+      if (raw%elements_line /= 0) then
+         call scanner%fail(error, '$Entities after $Elements (line '//to_string(raw%elements_line)// &
+                           '): the physical groups of the elements come from $Entities, which must come first')
+         return
+      end if
+      call read_entities(scanner, raw, error)
+   end subroutine read_entities_section
 
    !> First section: `$MeshFormat`, version file-type data-size, `$EndMeshFormat`.
    subroutine read_mesh_format(scanner, raw, error)
@@ -157,6 +213,7 @@ contains
                            '" (not a gmsh ASCII mesh file)')
          return
       end if
+      raw%mesh_format_line = scanner%line_number
       call next_data_line(scanner, '$MeshFormat', error)
       if (allocated(error)) return
       call scanner%next_token(token, found)
@@ -179,12 +236,12 @@ contains
       call expect_section_end(scanner, '$MeshFormat', error)
    end subroutine read_mesh_format
 
-   !> `$PhysicalNames`: count, then lines `dim tag "name"`.
+   !> `$PhysicalNames`: count, then lines `dim tag "name"`; one name per (dim, tag).
    subroutine read_physical_names(scanner, raw, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(raw_mesh_t), intent(inout) :: raw
       type(error_t), allocatable, intent(out) :: error
-      integer :: count, i, dim, tag
+      integer :: count, i, k, dim, tag
       character(len=:), allocatable :: name
       call read_count_line(scanner, '$PhysicalNames', count, error)
       if (allocated(error)) return
@@ -194,14 +251,22 @@ contains
          if (allocated(error)) return
          call read_dimension(scanner, dim, error)
          if (allocated(error)) return
-         call scanner%read_integer(tag, error)
+         call read_physical_tag(scanner, .false., tag, error)
          if (allocated(error)) return
          call scanner%read_string(name, error)
          if (allocated(error)) return
          call scanner%expect_end_of_line(error)
          if (allocated(error)) return
+         do k = 1, raw%name_dims%count
+            if (raw%name_dims%items(k) == dim .and. raw%name_tags%items(k) == tag) then
+               call scanner%fail(error, 'physical group '//to_string(dim)//':'//to_string(tag)// &
+                                 ' is named twice (first on line '//to_string(raw%name_lines%items(k))//')')
+               return
+            end if
+         end do
          call push(raw%name_dims, dim)
          call push(raw%name_tags, tag)
+         call push(raw%name_lines, scanner%line_number)
          raw%names(i)%text = name
       end do
       call expect_section_end(scanner, '$PhysicalNames', error)
@@ -226,8 +291,8 @@ contains
       end do
       call scanner%expect_end_of_line(error)
       if (allocated(error)) return
-      if (sum(counts) > scanner%remaining_lines()) then
-         call scanner%fail(error, '$Entities declares '//to_string(sum(counts))//' entities but only '// &
+      if (sum(int(counts, i8)) > scanner%remaining_lines()) then
+         call scanner%fail(error, '$Entities declares '//to_string(sum(int(counts, i8)))//' entities but only '// &
                            to_string(scanner%remaining_lines())//' lines follow (truncated file or bad count)')
          return
       end if
@@ -246,7 +311,7 @@ contains
                return
             end if
             do j = 1, n_physical
-               call scanner%read_integer(physical, error)
+               call read_physical_tag(scanner, .false., physical, error)
                if (allocated(error)) return
                call push(raw%entity_physicals(dim), physical)
             end do
@@ -259,7 +324,6 @@ contains
             end if
          end do
       end do
-      raw%has_entities = .true.
       call expect_section_end(scanner, '$Entities', error)
    end subroutine read_entities
 
@@ -278,7 +342,7 @@ contains
          call read_positive_id(scanner, 'node', raw%node_ids(i), error)
          if (allocated(error)) return
          raw%node_lines(i) = scanner%line_number
-         call read_coordinates(scanner, raw%coords(:, i), .true., error)
+         call read_coordinates(scanner, raw%coords(:, i), 0, error)
          if (allocated(error)) return
       end do
       raw%n_nodes = count
@@ -286,7 +350,8 @@ contains
    end subroutine read_nodes_v2
 
    !> 4.1 `$Nodes`: `nblocks nnodes mintag maxtag`; per block `dim tag parametric n`, then
-   !> n lines of node tags and n lines `x y z [u [v [w]]]`.
+   !> n lines of node tags and n lines `x y z`, followed by `dim` parametric coordinates
+   !> (u; u v; u v w) if `parametric` is 1.
    subroutine read_nodes_v4(scanner, raw, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(raw_mesh_t), intent(inout) :: raw
@@ -314,9 +379,13 @@ contains
          if (allocated(error)) return
          call scanner%read_integer(parametric, error)
          if (allocated(error)) return
+         if (parametric /= 0 .and. parametric /= 1) then
+            call scanner%fail(error, 'expected parametric 0 or 1, got "'//to_string(parametric)//'"')
+            return
+         end if
          call read_count(scanner, '$Nodes', block_count, error)
          if (allocated(error)) return
-         if (raw%n_nodes + block_count > count) then
+         if (block_count > count - raw%n_nodes) then
             call scanner%fail(error, 'bad counts: the node blocks hold more than the '//to_string(count)// &
                               ' nodes declared on line '//to_string(header_line))
             return
@@ -333,7 +402,7 @@ contains
          do i = raw%n_nodes + 1, raw%n_nodes + block_count
             call next_data_line(scanner, '$Nodes', error)
             if (allocated(error)) return
-            call read_coordinates(scanner, raw%coords(:, i), parametric == 0, error)
+            call read_coordinates(scanner, raw%coords(:, i), parametric*dim, error)
             if (allocated(error)) return
          end do
          raw%n_nodes = raw%n_nodes + block_count
@@ -367,9 +436,12 @@ contains
          if (allocated(error)) return
          physical = 0
          do j = 1, n_tags
-            call scanner%read_integer(tag, error)
+            if (j == 1) then
+               call read_physical_tag(scanner, .true., physical, error)
+            else
+               call scanner%read_integer(tag, error)
+            end if
             if (allocated(error)) return
-            if (j == 1) physical = tag
          end do
          if (physical == 0 .and. element_type /= gmsh_hexahedron) cycle
          call gmsh_type_info(element_type, n_nodes, dim)
@@ -385,7 +457,6 @@ contains
          call add_record(scanner, raw, id, element_type, n_nodes, [group], error)
          if (allocated(error)) return
       end do
-      raw%has_elements = .true.
       call expect_section_end(scanner, '$Elements', error)
    end subroutine read_elements_v2
 
@@ -423,15 +494,15 @@ contains
          if (allocated(error)) return
          call read_count(scanner, '$Elements', block_count, error)
          if (allocated(error)) return
-         total = total + block_count
-         if (total > count) then
+         if (block_count > count - total) then
             call scanner%fail(error, 'bad counts: the element blocks hold more than the '//to_string(count)// &
                               ' elements declared on line '//to_string(header_line))
             return
          end if
+         total = total + block_count
          ! physical groups of the entity
          allocate (groups(0))
-         if (raw%has_entities) then
+         if (raw%entities_line /= 0) then
             entity = raw%entity_map(dim)%lookup(tag)
             if (entity == 0) then
                call scanner%fail(error, 'entity '//to_string(tag)//' of dimension '//to_string(dim)// &
@@ -469,7 +540,6 @@ contains
                           to_string(count)//' elements, its blocks hold '//to_string(total))
          return
       end if
-      raw%has_elements = .true.
       call expect_section_end(scanner, '$Elements', error)
    end subroutine read_elements_v4
 
@@ -904,21 +974,26 @@ contains
       type(raw_mesh_t), intent(inout) :: raw
       integer, intent(in) :: count
       allocate (raw%node_ids(count), raw%node_lines(count), raw%coords(3, count))
-      raw%has_nodes = .true.
    end subroutine allocate_nodes
 
-   !> x y z of a node line; with `exact`, nothing may follow.
-   subroutine read_coordinates(scanner, x, exact, error)
+   !> x y z of a node line, then `n_parametric` parametric coordinates (not kept), then
+   !> nothing else. All must be finite numbers.
+   subroutine read_coordinates(scanner, x, n_parametric, error)
       type(text_scanner_t), intent(inout) :: scanner
       real(dp), intent(out) :: x(3)
-      logical, intent(in) :: exact
+      integer, intent(in) :: n_parametric
       type(error_t), allocatable, intent(out) :: error
+      real(dp) :: parameter_value
       integer :: k
       do k = 1, 3
          call scanner%read_real(x(k), error)
          if (allocated(error)) return
       end do
-      if (exact) call scanner%expect_end_of_line(error)
+      do k = 1, n_parametric
+         call scanner%read_real(parameter_value, error)
+         if (allocated(error)) return
+      end do
+      call scanner%expect_end_of_line(error)
    end subroutine read_coordinates
 
    subroutine read_positive_id(scanner, what, id, error)
@@ -930,6 +1005,20 @@ contains
       if (allocated(error)) return
       if (id <= 0) call scanner%fail(error, 'expected a positive '//what//' id, got "'//to_string(id)//'"')
    end subroutine read_positive_id
+
+   !> A physical tag: positive, gmsh numbers physical groups from 1; with `zero_for_none`, 0
+   !> too (the first tag of a 2.2 element in no physical group).
+   subroutine read_physical_tag(scanner, zero_for_none, tag, error)
+      type(text_scanner_t), intent(inout) :: scanner
+      logical, intent(in) :: zero_for_none
+      integer, intent(out) :: tag
+      type(error_t), allocatable, intent(out) :: error
+      call scanner%read_integer(tag, error)
+      if (allocated(error)) return
+      if (tag < 0 .or. (tag == 0 .and. .not. zero_for_none)) then
+         call scanner%fail(error, 'expected a positive physical tag, got "'//to_string(tag)//'"')
+      end if
+   end subroutine read_physical_tag
 
    subroutine read_dimension(scanner, dim, error)
       type(text_scanner_t), intent(inout) :: scanner

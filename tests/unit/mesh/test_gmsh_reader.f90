@@ -4,10 +4,13 @@
 !>
 !> block.geo: x in [0, 2], y and z in [0, 1], two unit-cube HEX8. Node ids and connectivity
 !> quoted below are read off block_v22.msh.
+!>
+!> The malformed-input tests at the end write their files themselves (output_path): a one-
+!> hexahedron cube (cube_v22, cube_v41) with one line changed, as in tests/errors/gmsh_*.msh.
 module test_gmsh_reader
    use frix_kinds, only: dp
    use frix_error, only: error_t
-   use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains
+   use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains, output_path
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t, hex8_face_nodes
    use frix_gmsh_reader, only: read_gmsh
@@ -16,6 +19,8 @@ module test_gmsh_reader
    private
 
    public :: collect_gmsh_reader, collect_gmsh_errors, read_block
+
+   character(len=*), parameter :: nl = new_line('a')
 
 contains
 
@@ -26,7 +31,9 @@ contains
                new_unittest('v22_surface_normals', test_v22_surface_normals), &
                new_unittest('v41_equals_v22', test_v41_equals_v22), &
                new_unittest('no_physical_groups', test_no_groups), &
-               new_unittest('hexahedra_in_two_volumes', test_two_volumes)]
+               new_unittest('hexahedra_in_two_volumes', test_two_volumes), &
+               new_unittest('cube_files_are_valid', test_cube_files), &
+               new_unittest('parametric_nodes_v41', test_parametric_nodes)]
    end subroutine collect_gmsh_reader
 
    subroutine collect_gmsh_errors(tests)
@@ -45,7 +52,19 @@ contains
                new_unittest('tetrahedron_in_volume', test_tetrahedron), &
                new_unittest('second_order_in_volume', test_second_order), &
                new_unittest('quad_matching_no_face', test_unmatched_quad), &
-               new_unittest('quad_on_interior_face', test_interior_face)]
+               new_unittest('quad_on_interior_face', test_interior_face), &
+               new_unittest('second_physical_names', test_second_physical_names), &
+               new_unittest('second_entities', test_second_entities), &
+               new_unittest('second_mesh_format', test_second_mesh_format), &
+               new_unittest('second_nodes_and_elements', test_second_nodes_elements), &
+               new_unittest('entities_after_elements', test_entities_after_elements), &
+               new_unittest('physical_tag_not_positive', test_physical_tag_sign), &
+               new_unittest('physical_name_dimension', test_physical_name_dimension), &
+               new_unittest('physical_group_named_twice', test_named_twice), &
+               new_unittest('count_overflow_v41', test_count_overflow), &
+               new_unittest('bad_parametric_flag', test_parametric_flag), &
+               new_unittest('stray_section_end', test_stray_end), &
+               new_unittest('coordinates_not_finite', test_coordinates_not_finite)]
    end subroutine collect_gmsh_errors
 
    !> Read data file `name`; error if the read fails.
@@ -351,4 +370,241 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call expect_error('error_interior_face.msh', '32: quadrilateral 4 lies on a face shared by two hexahedra', error)
    end subroutine test_interior_face
+
+   ! ---- malformed input (files written by the tests) ---------------------------------------
+
+   !> A unit cube: nodes 1..8, hexahedron 2 in physical volume "cube" (3:1), quadrilateral 1
+   !> on its face z = 0 in physical surface "bottom" (2:2). Format 2.2; lines: 1-3 $MeshFormat,
+   !> 4-8 $PhysicalNames, 9-19 $Nodes, 20-24 $Elements.
+   function cube_v22() result(text)
+      character(len=:), allocatable :: text
+      text = '$MeshFormat'//nl//'2.2 0 8'//nl//'$EndMeshFormat'//nl// &
+             '$PhysicalNames'//nl//'2'//nl//'2 2 "bottom"'//nl//'3 1 "cube"'//nl//'$EndPhysicalNames'//nl// &
+             '$Nodes'//nl//'8'//nl//'1 0 0 0'//nl//'2 1 0 0'//nl//'3 1 1 0'//nl//'4 0 1 0'//nl// &
+             '5 0 0 1'//nl//'6 1 0 1'//nl//'7 1 1 1'//nl//'8 0 1 1'//nl//'$EndNodes'//nl// &
+             '$Elements'//nl//'2'//nl//'1 3 2 2 1 1 4 3 2'//nl//'2 5 2 1 1 1 2 3 4 5 6 7 8'//nl// &
+             '$EndElements'//nl
+   end function cube_v22
+
+   !> The same cube in format 4.1: surface entity 1 (physical 2), volume entity 1 (physical 1).
+   !> Lines: 1-3 $MeshFormat, 4-8 $PhysicalNames, 9-13 $Entities, 14-33 $Nodes, 34-40 $Elements.
+   function cube_v41() result(text)
+      character(len=:), allocatable :: text
+      text = '$MeshFormat'//nl//'4.1 0 8'//nl//'$EndMeshFormat'//nl// &
+             '$PhysicalNames'//nl//'2'//nl//'2 2 "bottom"'//nl//'3 1 "cube"'//nl//'$EndPhysicalNames'//nl// &
+             '$Entities'//nl//'0 0 1 1'//nl//'1 0 0 0 1 1 0 1 2 0'//nl//'1 0 0 0 1 1 1 1 1 0'//nl// &
+             '$EndEntities'//nl// &
+             '$Nodes'//nl//'1 8 1 8'//nl//'3 1 0 8'//nl//'1'//nl//'2'//nl//'3'//nl//'4'//nl//'5'//nl// &
+             '6'//nl//'7'//nl//'8'//nl//'0 0 0'//nl//'1 0 0'//nl//'1 1 0'//nl//'0 1 0'//nl// &
+             '0 0 1'//nl//'1 0 1'//nl//'1 1 1'//nl//'0 1 1'//nl//'$EndNodes'//nl// &
+             '$Elements'//nl//'2 2 1 2'//nl//'2 1 3 1'//nl//'1 1 4 3 2'//nl//'3 1 5 1'//nl// &
+             '2 1 2 3 4 5 6 7 8'//nl//'$EndElements'//nl
+   end function cube_v41
+
+   !> `text` with its first `old` replaced by `new` (unchanged if `old` does not occur: the
+   !> test then fails for want of the expected error).
+   function replaced(text, old, new) result(changed)
+      character(len=*), intent(in) :: text, old, new
+      character(len=:), allocatable :: changed
+      integer :: at
+      at = index(text, old)
+      if (at == 0) then
+         changed = text
+      else
+         changed = text(1:at - 1)//new//text(at + len(old):)
+      end if
+   end function replaced
+
+   !> Write `text` to the file `name`, read it with read_gmsh, delete it.
+   subroutine read_text(name, text, mesh, read_error, error)
+      character(len=*), intent(in) :: name, text
+      type(mesh_t), intent(out) :: mesh
+      type(error_t), allocatable, intent(out) :: read_error, error
+      integer :: unit, status
+      open (newunit=unit, file=output_path(name), status='replace', access='stream', form='unformatted', &
+            action='write', iostat=status)
+      call check(error, status == 0, 'cannot write '//output_path(name))
+      if (allocated(error)) return
+      write (unit) text
+      close (unit)
+      call read_gmsh(output_path(name), mesh, read_error)
+      open (newunit=unit, file=output_path(name), status='old', iostat=status)
+      if (status == 0) close (unit, status='delete')
+   end subroutine read_text
+
+   !> Read `text` (written to `name`), expecting an error containing "name:" then `fragment`.
+   subroutine expect_text_error(name, text, fragment, error)
+      character(len=*), intent(in) :: name, text, fragment
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: read_error
+      call read_text(name, text, mesh, read_error, error)
+      if (allocated(error)) return
+      call check_message_contains(error, read_error, name//':'//fragment)
+   end subroutine expect_text_error
+
+   !> Both cube files read: 8 nodes, one hexahedron, sets "bottom" (face 1) and "cube".
+   subroutine test_cube_files(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: v22, v41
+      type(error_t), allocatable :: read_error
+      call read_text('gmsh_test_cube_v22.msh', cube_v22(), v22, read_error, error)
+      if (allocated(error)) return
+      if (allocated(read_error)) call move_alloc(read_error, error)
+      if (allocated(error)) return
+      call read_text('gmsh_test_cube_v41.msh', cube_v41(), v41, read_error, error)
+      if (allocated(error)) return
+      if (allocated(read_error)) call move_alloc(read_error, error)
+      if (allocated(error)) return
+      call check(error, v22%n_nodes == 8 .and. v22%n_elements == 1 .and. v41%n_nodes == 8 .and. &
+                 v41%n_elements == 1, '8 nodes and 1 hexahedron in each format')
+      if (allocated(error)) return
+      call check(error, all(v22%coords == v41%coords) .and. all(v22%connectivity == v41%connectivity), &
+                 'same nodes and hexahedron')
+      if (allocated(error)) return
+      call check(error, size(v41%surfaces) == 1 .and. size(v41%element_sets) == 1, 'one surface, one element set')
+      if (allocated(error)) return
+      call check(error, v41%surfaces(1)%name == 'bottom' .and. all(v41%surfaces(1)%faces == 1) .and. &
+                 v41%element_sets(1)%name == 'cube', 'surface "bottom" on face 1, element set "cube"')
+   end subroutine test_cube_files
+
+   !> gmsh -save_parametric: `dim` parametric coordinates after x y z (u v on a surface), read
+   !> and dropped; the mesh is that of the plain file.
+   subroutine test_parametric_nodes(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: plain, parametric
+      type(error_t), allocatable :: read_error
+      character(len=:), allocatable :: text
+      text = replaced(cube_v41(), '$Nodes'//nl//'1 8 1 8'//nl//'3 1 0 8'//nl//'1'//nl//'2'//nl//'3'//nl//'4'//nl// &
+                      '5'//nl//'6'//nl//'7'//nl//'8'//nl//'0 0 0'//nl//'1 0 0'//nl//'1 1 0'//nl//'0 1 0'//nl, &
+                      '$Nodes'//nl//'2 8 1 8'//nl//'2 1 1 4'//nl//'1'//nl//'2'//nl//'3'//nl//'4'//nl// &
+                      '0 0 0 0 0'//nl//'1 0 0 1 0'//nl//'1 1 0 1 1'//nl//'0 1 0 0 1'//nl// &
+                      '3 1 0 4'//nl//'5'//nl//'6'//nl//'7'//nl//'8'//nl)
+      call read_text('gmsh_test_parametric.msh', text, parametric, read_error, error)
+      if (allocated(error)) return
+      if (allocated(read_error)) call move_alloc(read_error, error)
+      if (allocated(error)) return
+      call read_text('gmsh_test_plain.msh', cube_v41(), plain, read_error, error)
+      if (allocated(error)) return
+      if (allocated(read_error)) call move_alloc(read_error, error)
+      if (allocated(error)) return
+      call check(error, parametric%n_nodes == 8 .and. all(parametric%coords == plain%coords) .and. &
+                 all(parametric%connectivity == plain%connectivity), 'parametric coordinates dropped')
+   end subroutine test_parametric_nodes
+
+   subroutine test_second_physical_names(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: names = '$PhysicalNames'//nl//'1'//nl//'2 2 "floor"'//nl//'$EndPhysicalNames'//nl
+      call expect_text_error('gmsh_test_names_v22.msh', replaced(cube_v22(), '$Nodes', names//'$Nodes'), &
+                             '9: a second $PhysicalNames section (the first is on line 4)', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_names_v41.msh', replaced(cube_v41(), '$Elements', names//'$Elements'), &
+                             '34: a second $PhysicalNames section (the first is on line 4)', error)
+   end subroutine test_second_physical_names
+
+   subroutine test_second_entities(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_entities.msh', replaced(cube_v41(), '$Nodes', &
+                             '$Entities'//nl//'0 0 0 0'//nl//'$EndEntities'//nl//'$Nodes'), &
+                             '14: a second $Entities section (the first is on line 9)', error)
+   end subroutine test_second_entities
+
+   subroutine test_second_mesh_format(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_format.msh', replaced(cube_v22(), '$PhysicalNames', &
+                             '$MeshFormat'//nl//'4.1 0 8'//nl//'$EndMeshFormat'//nl//'$PhysicalNames'), &
+                             '4: a second $MeshFormat section (the first is on line 1)', error)
+   end subroutine test_second_mesh_format
+
+   subroutine test_second_nodes_elements(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_nodes.msh', cube_v22()//'$Nodes'//nl//'0'//nl//'$EndNodes'//nl, &
+                             '25: a second $Nodes section (the first is on line 9)', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_elements.msh', cube_v41()//'$Elements'//nl//'0 0 0 0'//nl// &
+                             '$EndElements'//nl, '41: a second $Elements section (the first is on line 34)', error)
+   end subroutine test_second_nodes_elements
+
+   !> In 4.1 the physical groups of an element block are those of its entity.
+   subroutine test_entities_after_elements(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: entities = '$Entities'//nl//'0 0 1 1'//nl//'1 0 0 0 1 1 0 1 2 0'//nl// &
+                                                '1 0 0 0 1 1 1 1 1 0'//nl//'$EndEntities'//nl
+      call expect_text_error('gmsh_test_entities_last.msh', replaced(cube_v41(), entities, '')//entities, &
+                             '36: $Entities after $Elements (line 29)', error)
+   end subroutine test_entities_after_elements
+
+   subroutine test_physical_tag_sign(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_tag_name.msh', replaced(cube_v22(), '2 2 "bottom"', '2 -2 "bottom"'), &
+                             '6: expected a positive physical tag, got "-2"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_tag_zero.msh', replaced(cube_v22(), '2 2 "bottom"', '2 0 "bottom"'), &
+                             '6: expected a positive physical tag, got "0"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_tag_element.msh', replaced(cube_v22(), '1 3 2 2 1', '1 3 2 -2 1'), &
+                             '22: expected a positive physical tag, got "-2"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_tag_entity.msh', replaced(cube_v41(), '1 0 0 0 1 1 0 1 2 0', &
+                             '1 0 0 0 1 1 0 1 -2 0'), '11: expected a positive physical tag, got "-2"', error)
+   end subroutine test_physical_tag_sign
+
+   subroutine test_physical_name_dimension(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_name_dim.msh', replaced(cube_v22(), '2 2 "bottom"', '4 2 "bottom"'), &
+                             '6: expected a dimension 0..3, got "4"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_name_dim_neg.msh', replaced(cube_v41(), '2 2 "bottom"', '-1 2 "bottom"'), &
+                             '6: expected a dimension 0..3, got "-1"', error)
+   end subroutine test_physical_name_dimension
+
+   subroutine test_named_twice(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_named_twice.msh', replaced(cube_v22(), '2'//nl//'2 2 "bottom"', &
+                             '3'//nl//'2 2 "bottom"'//nl//'2 2 "floor"'), &
+                             '7: physical group 2:2 is named twice (first on line 6)', error)
+   end subroutine test_named_twice
+
+   !> Counts whose sums overflow default integers: four entity counts, a node or element block
+   !> beyond its section's count.
+   subroutine test_count_overflow(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_entity_sum.msh', replaced(cube_v41(), '0 0 1 1', &
+                             '2147483647 2147483647 1 1'), '10: $Entities declares 4294967296 entities', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_node_block.msh', replaced(replaced(cube_v41(), '1 8 1 8', '2 8 1 8'), &
+                             '0 1 1'//nl//'$EndNodes', '0 1 1'//nl//'3 1 0 2147483647'//nl//'$EndNodes'), &
+                             '33: bad counts: the node blocks hold more than the 8 nodes declared on line 15', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_element_block.msh', replaced(cube_v41(), '3 1 5 1', '3 1 5 2147483647'), &
+                             '38: bad counts: the element blocks hold more than the 2 elements declared '// &
+                             'on line 35', error)
+   end subroutine test_count_overflow
+
+   subroutine test_parametric_flag(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_parametric_flag.msh', replaced(cube_v41(), '3 1 0 8', '3 1 2 8'), &
+                             '16: expected parametric 0 or 1, got "2"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_parametric_short.msh', replaced(cube_v41(), '3 1 0 8', '3 1 1 8'), &
+                             '25: expected a number, got end of line', error)
+   end subroutine test_parametric_flag
+
+   subroutine test_stray_end(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_stray_end.msh', replaced(cube_v22(), '$Nodes', '$EndNodes'//nl//'$Nodes'), &
+                             '9: "$EndNodes" outside its section', error)
+   end subroutine test_stray_end
+
+   subroutine test_coordinates_not_finite(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect_text_error('gmsh_test_nan.msh', replaced(cube_v22(), '7 1 1 1', '7 1 NaN 1'), &
+                             '17: expected a number, got "NaN"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_inf.msh', replaced(cube_v41(), '1 1 1'//nl//'0 1 1', '1 1 -Inf'//nl//'0 1 1'), &
+                             '31: expected a number, got "-Inf"', error)
+      if (allocated(error)) return
+      call expect_text_error('gmsh_test_1e400.msh', replaced(cube_v22(), '7 1 1 1', '7 1 1e400 1'), &
+                             '17: number out of range, got "1e400"', error)
+   end subroutine test_coordinates_not_finite
 end module test_gmsh_reader
