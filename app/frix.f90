@@ -1,17 +1,20 @@
 !> frix: runs a CARAT-style input deck.
 !>   frix DECK [--out DIR] [--check] [--quiet] [--restart FILE.h5 --from STEP.INCREMENT]
-!> Exit status 0 on success, 1 on a deck error or a failed analysis, 2 on a usage error.
+!> Exit status 0 on success, 1 on a deck error or a failed analysis, 2 on a usage error, 3 when
+!> the run was stopped by SIGINT or SIGTERM (its converged increments written).
 !> This is the only place where errors are printed.
 program frix
    use frix_error, only: error_t
    use frix_driver, only: run_options_t, run_deck
    use frix_process, only: exit_with_status, keep_freed_memory
+   use frix_stop_request, only: install_stop_handlers, stop_requested
    implicit none
    type(run_options_t) :: options
    type(error_t), allocatable :: error
    integer :: status
 
    call keep_freed_memory()
+   call install_stop_handlers()
    call parse_command_line(options, status)
    if (status /= 0) then
       call print_usage()
@@ -21,6 +24,7 @@ program frix
    call run_deck(options, error)
    if (allocated(error)) then
       write (0, '(a)') error%message
+      if (stop_requested()) call exit_with_status(3)
       call exit_with_status(1)
    end if
 

@@ -16,6 +16,9 @@ add_test(NAME io_vtk_readback COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/vtk_readb
 add_test(NAME compare_selftest COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/compare_selftest.sh)
 set_tests_properties(io_vtk_readback compare_selftest PROPERTIES LABELS unit)
 
+# The fuzzer: mutated decks and gmsh meshes must never crash frix (tests/fuzz/README.md).
+include(${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz.cmake OPTIONAL)
+
 # Verification problems (V1 patch tests, V2 Cook's membrane, V3 large deflection, ...).
 include(${CMAKE_CURRENT_SOURCE_DIR}/verification/verification.cmake OPTIONAL)
 
@@ -34,8 +37,28 @@ add_test(NAME solver_limit_point_cutback
                  "at the smallest increment allowed|, direction z, largest Newton correction "
                  limit_point_cutback.pvd limit_point_cutback_0001_0009.vtu
                  limit_point_cutback_history.csv limit_point_cutback_listing.txt)
+# The finite-value guard: step 1 converges and is written, step 2's load overflows (a located
+# failure after the cut-backs, no NaN or Inf in any file: check_run.sh).
+add_test(NAME solver_overflow_load
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/overflow_load.dck 1
+                 "is not finite|at node 3, direction x|the results of the 1 converged increments"
+                 overflow_load_0001_0001.vtu overflow_load_history.csv overflow_load.pos overflow_load.h5)
 set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
-                     PROPERTIES LABELS regression)
+                     solver_overflow_load PROPERTIES LABELS regression)
+# SIGINT / SIGTERM stop a run at a safe point (exit 3, files complete, no temporary file);
+# SIGKILL during the first increment leaves the contact CSV's header.
+foreach(signal INT TERM KILL)
+  add_test(NAME solver_stop_sig${signal}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/stop_signal_test.sh ${FRIX_BIN}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/solver/stop_signal.dck ${signal})
+  set_tests_properties(solver_stop_sig${signal} PROPERTIES LABELS regression TIMEOUT 300)
+endforeach()
+# A system too large for CHOLMOD's 32-bit interface is reported as such (0.9 M equations,
+# 1.4 GB: slow).
+add_test(NAME solver_too_large_cholmod
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/too_large_cholmod.dck 1
+                 "CHOLMOD: the problem is too large for the solver|902289 equations")
+set_tests_properties(solver_too_large_cholmod PROPERTIES LABELS "regression;slow" TIMEOUT 600)
 add_test(NAME solver_limit_point_values
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck)

@@ -564,8 +564,8 @@ contains
          end if
          if (converged .or. iteration > smooth_projection_iterations) return
          step = matmul(inverse_2x2(jacobian), residual%value)
-         ! at most half a face per step
-         step = step*min(1.0_dp, 1.0_dp/maxval(abs(step)))
+         ! at most half a face per step (a zero step is a converged one)
+         if (maxval(abs(step)) > 1.0_dp) step = step/maxval(abs(step))
          xi = xi - step
          if (any(abs(xi) > 10.0_dp)) return
          ! converged: a step below the tolerance, or steps that stopped shrinking at round-off

@@ -25,7 +25,8 @@ contains
       call frix_keep_freed_memory_c()
    end subroutine keep_freed_memory
 
-   !> End the program with exit status `status` (0 success, 1 failed run, 2 usage error).
+   !> End the program with exit status `status` (0 success, 1 failed run, 2 usage error, 3 stopped
+   !> by a signal).
    subroutine exit_with_status(status)
       integer, intent(in) :: status
       flush (0)

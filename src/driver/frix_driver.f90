@@ -31,6 +31,7 @@ module frix_driver
    use frix_hdf5_results, only: read_restart, read_increment_array
    use frix_contact_assembly, only: commit_contact, get_contact_history, set_contact_history
    use frix_mesh, only: hex8_face_nodes
+   use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
    private
 
@@ -205,6 +206,10 @@ contains
       final_increment = .false.
       target_reached = .false.
       do while (state%committed_time < step_end - 1.0e-12_dp .and. .not. target_reached)
+         if (stop_requested()) then
+            call stopped_error(step, output, state, error)
+            return
+         end if
          write (label, '("step",i3,"  incr",i4)') step, increment + 1
          increment_start = wall_clock_seconds()
          previous_time = state%committed_time
@@ -219,6 +224,11 @@ contains
             call attempt_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
                                    report, iterations, error, path)
             if (allocated(error)) return
+            if (report%interrupted) then
+               call restore_state(state)
+               call stopped_error(step, output, state, error)
+               return
+            end if
             if (report%converged .and. state%time > step_end) then
                ! past the step's end: land on it under load control
                call restore_state(state)
@@ -240,6 +250,11 @@ contains
                                       report, iterations, error)
             end if
             if (allocated(error)) return
+            if (report%interrupted) then
+               call restore_state(state)
+               call stopped_error(step, output, state, error)
+               return
+            end if
          end if
          if (report%converged) then
             increment = increment + 1
@@ -286,8 +301,8 @@ contains
    !> eps_T) and stiffens the sliding modes, which is where Newton failed with low mu
    !> (docs/verification/s3.md); each stage moves its solution a little. A failing stage fails
    !> the attempt (then the caller cuts back). `iterations`: Newton iterations spent in all.
-   subroutine attempt_increment(model, context, state, time, max_iterations, label, report, iterations, &
-                                error, path)
+   subroutine continued_increment(model, context, state, time, max_iterations, label, report, iterations, &
+                                  error, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -305,7 +320,7 @@ contains
 
       call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
       iterations = report%iterations
-      if (allocated(error) .or. report%converged) return
+      if (allocated(error) .or. report%converged .or. report%interrupted) return
       if (.not. allocated(model%controls%friction_continuation)) return
       if (.not. (context%has_contact .and. context%contact%frictional)) return
       factors = [model%controls%friction_continuation, 1.0_dp]
@@ -318,7 +333,7 @@ contains
          if (.not. context%quiet) write (*, '(2x,a)') 'friction continuation: mu x '//trim(factor_text)
          call solve_increment(model, context, state, stage_time, max_iterations, label, report, error, path)
          iterations = iterations + report%iterations
-         if (allocated(error)) exit
+         if (allocated(error) .or. report%interrupted) exit
          if (.not. report%converged) then
             if (allocated(report%failure)) report%failure = report%failure// &
                ' in the friction continuation''s stage mu x '//trim(factor_text)
@@ -327,7 +342,45 @@ contains
          stage_time = state%time
       end do
       context%contact%friction_scale = 1.0_dp
+   end subroutine continued_increment
+
+   !> continued_increment with the floating-point traps off. An increment computes with what
+   !> the deck gives (loads of 1e308, penalties, coordinates): an overflow or an invalid
+   !> operation there is a property of the data, not a defect of frix, and must end in the same
+   !> located failure whatever the build's trap flags (-ffpe-trap in the Debug and Sanitize
+   !> builds). The finite-value guard of the Newton loop (check_finite in frix_newton_solver)
+   !> stops the increment at the first non-finite force, tangent entry, correction, energy or
+   !> displacement, and the driver cuts back. The flags raised are cleared; the halting mode is
+   !> restored on return (Fortran 2008, 14.5: by the compiler).
+   subroutine attempt_increment(model, context, state, time, max_iterations, label, report, iterations, &
+                                error, path)
+      use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_set_flag, ieee_usual
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      integer, intent(in) :: max_iterations
+      character(len=*), intent(in) :: label
+      type(newton_report_t), intent(out) :: report
+      integer, intent(out) :: iterations
+      type(error_t), allocatable, intent(out) :: error
+      type(path_constraint_t), intent(in), optional :: path
+      call ieee_set_halting_mode(ieee_usual, .false.)
+      call continued_increment(model, context, state, time, max_iterations, label, report, iterations, error, path)
+      call ieee_set_flag(ieee_usual, .false.)
    end subroutine attempt_increment
+
+   !> The error that ends a run stopped by SIGINT or SIGTERM (the program's main exits with
+   !> status 3); the increment under way is dropped, the converged ones are written.
+   subroutine stopped_error(step, output, state, error)
+      integer, intent(in) :: step
+      type(results_output_t), intent(in) :: output
+      type(analysis_state_t), intent(in) :: state
+      type(error_t), allocatable, intent(out) :: error
+      call fatal_error(error, 'frix: stopped by '//stop_signal_name()//' in step '//to_string(step)// &
+                       '; the results of the '//to_string(output%n_increments)// &
+                       ' converged increments up to t = '//time_text(state%committed_time)//' are written')
+   end subroutine stopped_error
 
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
    !> file of an earlier run of the same model, and say where the run continues: the step

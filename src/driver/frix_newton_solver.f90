@@ -17,13 +17,16 @@
 !> geometry, then dt = (target - u_c - a_c) / b_c and du = a + dt b. The increment can then pass a
 !> limit point of the load, where K is singular along the path and load control fails.
 module frix_newton_solver
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_finite_check, only: first_non_finite
+   use frix_stop_request, only: stop_requested
    use frix_model, only: model_t, solver_auto, solver_cholmod, solver_umfpack
    use frix_analysis_state, only: analysis_state_t
    use frix_sparse_matrix, only: sparse_matrix_t
-   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, solver_not_positive_definite
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
@@ -86,6 +89,7 @@ module frix_newton_solver
       integer, allocatable :: active(:)            !! contact: slave nodes in contact
       integer, allocatable :: slipping(:)          !! contact: slave nodes slipping
       character(len=:), allocatable :: failure     !! why it did not converge
+      logical :: interrupted = .false.             !! stopped by SIGINT/SIGTERM (frix_stop_request)
    end type newton_report_t
 
    real(dp), parameter :: zero_residual_fraction = 1.0e-4_dp
@@ -171,6 +175,11 @@ contains
       allocate (report%active(0:max_iterations), report%slipping(0:max_iterations), source=0)
 
       do iteration = 0, max_iterations
+         if (stop_requested()) then
+            report%interrupted = .true.
+            report%failure = 'stopped by a signal'
+            return
+         end if
          call evaluate_equilibrium(model, context, state, current_time, .true., residual_norm, reference, &
                                    report%failure, error, predictor=iteration == 0)
          if (allocated(error) .or. allocated(report%failure)) return
@@ -186,10 +195,6 @@ contains
                                                       residual_norm/reference, energy, context%has_contact, &
                                                       report%active(iteration), report%slipping(iteration))
 
-         if (residual_norm /= residual_norm) then
-            report%failure = 'the residual is not a number'
-            return
-         end if
          u_norm = norm2(state%u)
          if (residual_norm <= max(model%controls%tol_residual*reference, &
                                   roundoff_floor(model, context, state%u)) .and. &
@@ -250,10 +255,24 @@ contains
             call path_correction(model, context, state, path, time_correction, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
+         call check_finite(model, context%correction, 'Newton correction', report%failure)
+         if (allocated(report%failure)) return
          energy = abs(dot_product(context%correction, context%residual))
+         if (.not. ieee_is_finite(energy)) then
+            report%failure = 'the energy |du . r| of the correction is not finite (beyond the range of real '// &
+                             'numbers); its largest term is at '// &
+                             equation_label(model, maxloc(abs(context%correction*context%residual), dim=1))
+            return
+         end if
          correction_norm = norm2(context%correction)
          state%u = state%u + context%correction
+         call check_finite(model, state%u, 'displacement', report%failure)
+         if (allocated(report%failure)) return
          current_time = current_time + time_correction
+         if (.not. ieee_is_finite(current_time)) then
+            report%failure = 'the load factor of the path-following iteration is not finite'
+            return
+         end if
          state%time = current_time
          context%n_iterations = context%n_iterations + 1
          if (context%has_contact .and. iteration > 0) then
@@ -351,6 +370,8 @@ contains
          failure = element_error%message
          return
       end if
+      call check_finite(model, context%fint, 'internal force', failure)
+      if (allocated(failure)) return
       if (with_tangent) then
          if (context%has_contact) &
             call assemble_contact(model, context%contact, state%u, context%fint, context%matrix, predictor)
@@ -360,6 +381,10 @@ contains
          if (context%has_contact) call assemble_contact(model, context%contact, state%u, context%fint)
          call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
+      if (context%has_contact) call check_finite(model, context%fint, 'contact force', failure)
+      if (.not. allocated(failure)) call check_finite(model, context%fext, 'external force', failure)
+      if (.not. allocated(failure) .and. with_tangent) call check_finite_tangent(model, context%matrix, failure)
+      if (allocated(failure)) return
       context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
       context%n_assemblies = context%n_assemblies + 1
       context%residual = context%fext - context%fint
@@ -372,7 +397,41 @@ contains
       residual_norm = norm2(context%residual)
       reference = max(norm2(merge(context%fext, 0.0_dp, .not. context%fixed)), norm2(context%reactions))
       if (reference == 0.0_dp) reference = 1.0_dp
+      if (.not. (ieee_is_finite(residual_norm) .and. ieee_is_finite(reference))) &
+         failure = 'the norm of the residual or of the reactions is not finite (beyond the range of real numbers)'
    end subroutine evaluate_equilibrium
+
+   !> The finite-value guard (docs/solver.md): `failure` names the first equation where
+   !> `values` (per global equation) holds NaN or an infinity, and the quantity; unchanged when
+   !> every value is finite.
+   subroutine check_finite(model, values, quantity, failure)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: values(:)
+      character(len=*), intent(in) :: quantity
+      character(len=:), allocatable, intent(inout) :: failure
+      integer :: equation
+      equation = first_non_finite(values)
+      if (equation == 0) return
+      failure = 'the '//quantity//' is not finite ('//to_string(values(equation))//') at '// &
+                equation_label(model, equation)
+   end subroutine check_finite
+
+   !> check_finite for the tangent matrix: names the column (equation) of the first
+   !> non-finite entry.
+   subroutine check_finite_tangent(model, matrix, failure)
+      type(model_t), intent(in) :: model
+      type(sparse_matrix_t), intent(in) :: matrix
+      character(len=:), allocatable, intent(inout) :: failure
+      integer :: entry, column
+      entry = first_non_finite(matrix%values)
+      if (entry == 0) return
+      column = 1
+      do while (matrix%col_ptr(column) < entry)   ! column j holds entries col_ptr(j-1)+1 .. col_ptr(j)
+         column = column + 1
+      end do
+      failure = 'the tangent stiffness is not finite ('//to_string(matrix%values(entry))//') in the column of '// &
+                equation_label(model, column)
+   end subroutine check_finite_tangent
 
    !> Line search after a Newton correction du with contact, when the residual at u + du is
    !> larger than before the correction (penalty contact overshoots as nodes enter or leave
@@ -480,7 +539,8 @@ contains
    !> Factorize and solve K du = r. When CHOLMOD finds the matrix not positive definite (past
    !> a limit point, or with large penetrations in the first contact iterations), the
    !> iteration is repeated with UMFPACK, which stays in use until the end of the increment;
-   !> the next increment tries CHOLMOD again. Both keep their symbolic analyses.
+   !> the next increment tries CHOLMOD again. Both keep their symbolic analyses. Any other
+   !> failure (too large, out of memory, a singular matrix) is reported as it is.
    subroutine factorize_and_solve(model, context, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
@@ -491,7 +551,7 @@ contains
             call solve_factorized(context, context%residual, context%correction, error)
             return
          end if
-         if (context%solver%name() /= 'CHOLMOD') then
+         if (context%solver%name() /= 'CHOLMOD' .or. context%solver%failure /= solver_not_positive_definite) then
             call describe_singularity(model, context%solver%failed_equation, error)
             return
          end if
@@ -594,13 +654,26 @@ contains
       integer, intent(in) :: iteration, active, slipping
       logical, intent(in) :: contact
       if (contact) then
-         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",es10.3,"  |r|/ref=",es10.3,'// &
-                '"  energy=",es10.3,"  contact",i6,"  slip",i6)') label, time, iteration, residual_norm, &
-            relative_norm, energy, active, slipping
+         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",a,"  |r|/ref=",a,'// &
+                '"  energy=",a,"  contact",i6,"  slip",i6)') label, time, iteration, norm_text(residual_norm), &
+            norm_text(relative_norm), norm_text(energy), active, slipping
       else
-         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",es10.3,"  |r|/ref=",es10.3,'// &
-                '"  energy=",es10.3)') label, time, iteration, residual_norm, relative_norm, energy
+         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",a,"  |r|/ref=",a,'// &
+                '"  energy=",a)') label, time, iteration, norm_text(residual_norm), norm_text(relative_norm), &
+            norm_text(energy)
       end if
       flush (6)
    end subroutine print_progress
+
+   !> A norm in 10 characters, es10.3 (" 1.234E-05"), or es10.3e3 ("1.234E+120") when the
+   !> exponent has three digits (es10.3 would drop the letter E: "1.234+120").
+   function norm_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=10) :: text
+      if (value == 0.0_dp .or. (abs(value) < 1.0e99_dp .and. abs(value) >= 1.0e-99_dp)) then
+         write (text, '(es10.3)') value
+      else
+         write (text, '(es10.3e3)') value
+      end if
+   end function norm_text
 end module frix_newton_solver

@@ -4,6 +4,7 @@
 !> `<base>_history.csv` of the requested node DOFs, and on request the POS3D neutral file
 !> `<base>.pos` and the HDF5 results/restart file `<base>.h5`. See docs/output.md.
 module frix_results_output
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_model, only: model_t
@@ -15,7 +16,8 @@ module frix_results_output
    use frix_history_writer, only: history_t
    use frix_pos3d_writer, only: pos3d_writer_t
    use frix_hdf5_results, only: hdf5_results_t
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, to_lower
+   use frix_finite_check, only: first_non_finite
    use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, &
                                     get_contact_history
    implicit none
@@ -113,10 +115,26 @@ contains
       real(dp), allocatable :: no_scalars(:, :), history_table(:, :)
       integer :: p
 
-      self%n_increments = self%n_increments + 1
       n_nodes = model%mesh%n_nodes
       displacement = reshape(state%u, [3, n_nodes])
       reaction = reshape(context%reactions, [3, n_nodes])
+      last_of_step = abs(state%time - real(step, dp)) < 1.0e-12_dp
+      wanted = mod(increment, max(1, model%results%every)) == 0 .or. last_of_step
+      ! every field is computed and checked before the first file receives any of them
+      call check_nodal_finite(model, step, increment, 'displacement', state%u, error)
+      if (.not. allocated(error)) call check_nodal_finite(model, step, increment, 'reaction', context%reactions, error)
+      if (.not. allocated(error) .and. context%has_contact) call check_contact_finite(model, step, increment, context, error)
+      if (allocated(error)) return
+      if (wanted .and. (model%results%vtk .or. model%results%pos3d .or. model%results%hdf5)) then
+         allocate (gp_stress(6, 8, model%mesh%n_elements), gp_strain(6, 8, model%mesh%n_elements))
+         allocate (fint(3*n_nodes))
+         call assemble_internal(model, state, fint, error, gp_stress=gp_stress, gp_strain=gp_strain)
+         if (allocated(error)) return
+         call check_element_finite(model, step, increment, 'stress', gp_stress, error)
+         if (.not. allocated(error)) call check_element_finite(model, step, increment, 'strain', gp_strain, error)
+         if (allocated(error)) return
+      end if
+      self%n_increments = self%n_increments + 1
 
       if (self%has_history) then
          call self%history%append(step, increment, state%time, displacement, reaction, error)
@@ -128,8 +146,6 @@ contains
          call contact_nodal_fields(context%contact, n_nodes, pressure, traction, gap, status, slip)
          shear = norm2(traction, dim=1)
       end if
-      last_of_step = abs(state%time - real(step, dp)) < 1.0e-12_dp
-      wanted = mod(increment, max(1, model%results%every)) == 0 .or. last_of_step
       if (.not. wanted) return
 
       if (self%listing%is_open()) then
@@ -151,12 +167,6 @@ contains
          end if
       end if
 
-      if (model%results%vtk .or. model%results%pos3d .or. model%results%hdf5) then
-         allocate (gp_stress(6, 8, model%mesh%n_elements), gp_strain(6, 8, model%mesh%n_elements))
-         allocate (fint(3*n_nodes))
-         call assemble_internal(model, state, fint, error, gp_stress=gp_stress, gp_strain=gp_strain)
-         if (allocated(error)) return
-      end if
       if (model%results%vtk) then
          if (context%has_contact) then
             call self%vtk%add_point_field('contact_pressure', reshape(pressure, [1, n_nodes]))
@@ -198,6 +208,67 @@ contains
       end if
    end subroutine output_write_increment
 
+   !> The finite-value guard of the output (docs/solver.md): an error naming the node and
+   !> direction of the first non-finite entry of a nodal field (3 values per node), so that no
+   !> result file receives NaN or an infinity.
+   subroutine check_nodal_finite(model, step, increment, quantity, values, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step, increment
+      character(len=*), intent(in) :: quantity
+      real(dp), intent(in) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
+      integer :: k
+      k = first_non_finite(values)
+      if (k == 0) return
+      call fatal_error(error, not_written(step, increment)//'the '//quantity//' at node '// &
+                       to_string(model%mesh%node_ids((k - 1)/3 + 1))//', direction '// &
+                       direction(mod(k - 1, 3) + 1)//' is not finite ('//to_string(values(k))//')')
+   end subroutine check_nodal_finite
+
+   !> check_nodal_finite for an integration-point field (6 components, 8 points per element).
+   subroutine check_element_finite(model, step, increment, quantity, values, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step, increment
+      character(len=*), intent(in) :: quantity
+      real(dp), intent(in) :: values(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: location(3)
+      if (all(ieee_is_finite(values))) return
+      location = findloc(ieee_is_finite(values), .false.)
+      call fatal_error(error, not_written(step, increment)//'the '//quantity//' of element '// &
+                       to_string(model%mesh%element_ids(location(3)))//' is not finite')
+   end subroutine check_element_finite
+
+   !> check_nodal_finite for the contact tables of every pass (gap, pressure, traction, slip).
+   subroutine check_contact_finite(model, step, increment, context, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step, increment
+      type(newton_context_t), intent(in) :: context
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: nodes(:)
+      real(dp), allocatable :: values(:, :)
+      integer :: p, pair, location(2)
+      do p = 1, size(context%contact%passes)
+         call contact_pass_table(context%contact, p, pair, nodes, values)
+         if (all(ieee_is_finite(values))) cycle
+         location = findloc(ieee_is_finite(values), .false.)
+         call fatal_error(error, not_written(step, increment)//'the contact '// &
+                          to_lower(trim(contact_table_labels(location(1))))//' at slave node '// &
+                          to_string(model%mesh%node_ids(nodes(location(2))))//' of pair '// &
+                          to_string(model%contact_pairs(pair)%id)//' is not finite')
+         return
+      end do
+   end subroutine check_contact_finite
+
+   !> Start of the output guard's messages.
+   function not_written(step, increment) result(text)
+      integer, intent(in) :: step, increment
+      character(len=:), allocatable :: text
+      text = 'frix: step '//to_string(step)//' increment '//to_string(increment)// &
+             ' is not written: '
+   end function not_written
+
    !> `<base>.pos` with the model; the materials' E and nu are read off their small-strain
    !> elastic tangent (C11 = lambda + 2 mu, C12 = lambda).
    subroutine open_pos3d(self, model, base, error)
@@ -237,6 +308,7 @@ contains
       end if
       write (self%contact_unit, '(a)') 'step,increment,time,pair,pass,node,x,y,z,gap,pressure,'// &
          'traction_x,traction_y,traction_z,slip,status'
+      flush (self%contact_unit)   ! a run killed before its first increment leaves the header
    end subroutine open_contact_csv
 
    subroutine write_contact_csv(self, model, context, step, increment, time, displacement, error)

@@ -12,14 +12,19 @@ module frix_cholmod_solver
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message, begin_factorize, &
-                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
+                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail, failure_of_size, &
+                                 solver_not_positive_definite, solver_too_large, solver_out_of_memory, solver_failed
    use frix_metis_ordering, only: metis_dof_permutation
    implicit none
    private
 
-   public :: cholmod_solver_t
+   public :: cholmod_solver_t, cholmod_failure
 
-   integer(c_int), parameter :: cholmod_not_posdef = 1   !! CHOLMOD_NOT_POSDEF in cholmod_core.h
+   !> Common->status values of cholmod_core.h (SuiteSparse 5.12)
+   integer(c_int), parameter :: cholmod_not_posdef = 1, cholmod_out_of_memory = -2, cholmod_too_large = -3
+   !> the int interface (cholmod_*, not cholmod_l_*) indexes the factor with a C int
+   character(len=*), parameter :: cholmod_limit = 'CHOLMOD''s 32-bit interface indexes at most 2^31 - 1 '// &
+                                                  'entries of its supernodal factor'
 
    !> CHOLMOD behind linear_solver_t.
    type, extends(linear_solver_t) :: cholmod_solver_t
@@ -119,7 +124,7 @@ contains
                                        matrix%values, permutation, lnz)
          call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status < 0) then
-            call fatal_error(error, 'CHOLMOD: symbolic analysis failed, status '//to_string(int(status)))
+            call cholmod_failure(error, status, 'symbolic analysis', matrix%n, lnz, solver%failure)
             return
          end if
          solver%n_analyses = solver%n_analyses + 1
@@ -135,16 +140,20 @@ contains
       solver%peak_memory_bytes = int(peak, i8)
 
       if (status == cholmod_not_posdef) then
+         solver%failure = solver_not_positive_definite
          solver%failed_equation = int(failed) + 1
          if (failed < 0) solver%failed_equation = 0
          call singular_matrix_message(error, 'CHOLMOD', 'singular or not positive definite', &
                                       solver%failed_equation, 'zero or negative pivot')
          return
       else if (status < 0) then
-         call fatal_error(error, 'CHOLMOD: numeric factorization failed, status '//to_string(int(status)))
+         call cholmod_failure(error, status, 'numeric factorization', matrix%n, real(solver%factor_entries, dp), &
+                              solver%failure)
          return
       end if
       if (.not. (min_pivot > solver%singular_pivot_ratio*max_pivot)) then
+         ! (LL' cannot tell a singular matrix from an indefinite one: UMFPACK may)
+         solver%failure = solver_not_positive_definite
          solver%failed_equation = int(failed) + 1
          call singular_matrix_message(error, 'CHOLMOD', 'singular or not positive definite', &
                                       solver%failed_equation, &
@@ -154,6 +163,29 @@ contains
       end if
       solver%factorized_pattern_id = matrix%pattern_id
    end subroutine factorize
+
+   !> The error and failure kind of a negative CHOLMOD status (too large, out of memory,
+   !> other) in `stage`, for a system of n equations whose factor has `factor_entries`
+   !> entries (0 if unknown).
+   subroutine cholmod_failure(error, status, stage, n, factor_entries, failure)
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int), intent(in) :: status
+      character(len=*), intent(in) :: stage
+      integer, intent(in) :: n
+      real(dp), intent(in) :: factor_entries
+      integer, intent(out) :: failure
+      select case (status)
+      case (cholmod_too_large)
+         failure = solver_too_large
+      case (cholmod_out_of_memory)
+         failure = solver_out_of_memory
+      case default
+         failure = solver_failed
+         call fatal_error(error, 'CHOLMOD: '//stage//' failed, status '//to_string(int(status)))
+         return
+      end select
+      call failure_of_size(error, 'CHOLMOD', failure, stage, n, factor_entries, cholmod_limit)
+   end subroutine cholmod_failure
 
    subroutine solve(solver, matrix, rhs, x, error)
       class(cholmod_solver_t), intent(inout) :: solver

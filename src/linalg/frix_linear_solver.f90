@@ -12,6 +12,18 @@ module frix_linear_solver
 
    public :: linear_solver_t, wall_clock_seconds, singular_matrix_message
    public :: begin_factorize, check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
+   public :: solver_ok, solver_not_positive_definite, solver_singular, solver_too_large, &
+             solver_out_of_memory, solver_failed, failure_of_size
+
+   !> What went wrong in the last factorize (linear_solver_t%failure): the Newton loop falls
+   !> back from CHOLMOD to UMFPACK only for a matrix that is not positive definite; every
+   !> other failure is reported as it is.
+   integer, parameter :: solver_ok = 0
+   integer, parameter :: solver_not_positive_definite = 1  !! a zero or negative Cholesky pivot
+   integer, parameter :: solver_singular = 2               !! a zero LU pivot, or pivots below the ratio
+   integer, parameter :: solver_too_large = 3              !! beyond the solver's integer range
+   integer, parameter :: solver_out_of_memory = 4
+   integer, parameter :: solver_failed = 5                 !! any other status of the library
 
    !> Abstract direct solver. Timings are wall clock seconds (system_clock).
    type, abstract :: linear_solver_t
@@ -27,6 +39,7 @@ module frix_linear_solver
       !> 1-based equation where a zero/negative/tiny pivot was found by the last factorize,
       !> 0 if none or unknown. Node = (equation-1)/3 + 1, direction = mod(equation-1, 3) + 1.
       integer :: failed_equation = 0
+      integer :: failure = solver_ok   !! solver_ok, solver_not_positive_definite, ... of the last factorize
       !> A factorization whose smallest pivot is below `singular_pivot_ratio` times the
       !> largest (|u_kk| for LU, l_kk^2 for Cholesky) is reported as singular: a condition
       !> number above 1/ratio leaves no correct digit worth having in double precision.
@@ -94,8 +107,10 @@ contains
       type(sparse_matrix_t), intent(in) :: matrix
       type(error_t), allocatable, intent(out) :: error
       solver%failed_equation = 0
+      solver%failure = solver_ok
       solver%factorized_pattern_id = 0
       if (matrix%pattern_id == 0 .or. matrix%n == 0) then
+         solver%failure = solver_failed
          call fatal_error(error, solver%name()//': the matrix has no pattern')
       end if
    end subroutine begin_factorize
@@ -135,6 +150,33 @@ contains
       character(len=:), allocatable :: detail
       detail = 'pivot ratio '//to_string(ratio)//' below '//to_string(limit)
    end function pivot_ratio_detail
+
+   !> The error for a factorization that ran out of room: `kind` solver_too_large (the
+   !> solver's integer range) or solver_out_of_memory; names the size of the system and of the
+   !> factor when known (factor_entries > 0).
+   subroutine failure_of_size(error, solver_name, kind, stage, n, factor_entries, limit)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: solver_name
+      integer, intent(in) :: kind
+      character(len=*), intent(in) :: stage   !! 'symbolic analysis', 'numeric factorization'
+      integer, intent(in) :: n                !! equations
+      real(dp), intent(in) :: factor_entries  !! predicted entries of the factor, 0 if unknown
+      character(len=*), intent(in) :: limit   !! what the solver cannot exceed, for too large
+      character(len=:), allocatable :: size_text
+      character(len=10) :: entries
+      size_text = to_string(n)//' equations'
+      if (factor_entries > 0.0_dp) then
+         write (entries, '(es10.3)') factor_entries
+         size_text = size_text//', a factor of about '//trim(adjustl(entries))//' nonzeros'
+      end if
+      if (kind == solver_too_large) then
+         call fatal_error(error, solver_name//': the problem is too large for the solver in its '//stage// &
+                          ' ('//size_text//'; '//limit//'): use a coarser mesh')
+      else
+         call fatal_error(error, solver_name//': out of memory in the '//stage//' ('//size_text// &
+                          '): use a coarser mesh or a machine with more memory')
+      end if
+   end subroutine failure_of_size
 
    !> The common error text for a singular or indefinite matrix, naming equation, node and
    !> direction (equation = 3*(node-1) + direction); `equation` 0 means unknown.

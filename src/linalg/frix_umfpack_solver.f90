@@ -13,7 +13,8 @@ module frix_umfpack_solver
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message, begin_factorize, &
-                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
+                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail, failure_of_size, &
+                                 solver_singular, solver_out_of_memory, solver_failed
    implicit none
    private
 
@@ -30,6 +31,7 @@ module frix_umfpack_solver
    integer, parameter :: umfpack_rcond = 67                    !! Info index UMFPACK_RCOND (min/max |u_kk|)
    integer(c_int), parameter :: umfpack_ok = 0                 !! UMFPACK_OK
    integer(c_int), parameter :: umfpack_warning_singular_matrix = 1  !! UMFPACK_WARNING_singular_matrix
+   integer(c_int), parameter :: umfpack_error_out_of_memory = -1     !! UMFPACK_ERROR_out_of_memory
    integer(c_int), parameter :: umfpack_system_a = 0           !! UMFPACK_A: solve A x = b
 
    !> UMFPACK behind linear_solver_t.
@@ -142,7 +144,7 @@ contains
                                       matrix%row_index, matrix%values, solver%symbolic, solver%control, solver%info)
          call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status /= umfpack_ok) then
-            call fatal_error(error, 'UMFPACK: symbolic analysis failed, status '//to_string(int(status)))
+            call umfpack_failure(error, status, 'symbolic analysis', matrix%n, solver%failure)
             return
          end if
          solver%n_analyses = solver%n_analyses + 1
@@ -157,14 +159,16 @@ contains
       solver%factor_entries = int(solver%info(umfpack_lnz + 1) + solver%info(umfpack_unz + 1), i8)
 
       if (status == umfpack_warning_singular_matrix) then
+         solver%failure = solver_singular
          solver%failed_equation = smallest_pivot_column(solver, matrix%n)
          call singular_matrix_message(error, 'UMFPACK', 'singular', solver%failed_equation, 'zero pivot')
          return
       else if (status /= umfpack_ok .and. status < 0) then
-         call fatal_error(error, 'UMFPACK: numeric factorization failed, status '//to_string(int(status)))
+         call umfpack_failure(error, status, 'numeric factorization', matrix%n, solver%failure)
          return
       end if
       if (.not. (solver%info(umfpack_rcond + 1) > solver%singular_pivot_ratio)) then
+         solver%failure = solver_singular
          solver%failed_equation = smallest_pivot_column(solver, matrix%n)
          call singular_matrix_message(error, 'UMFPACK', 'singular', solver%failed_equation, &
                                       pivot_ratio_detail(real(solver%info(umfpack_rcond + 1), dp), &
@@ -173,6 +177,24 @@ contains
       end if
       solver%factorized_pattern_id = matrix%pattern_id
    end subroutine factorize
+
+   !> The error and failure kind of a failed UMFPACK status in `stage` for n equations: out of
+   !> memory (UMFPACK_ERROR_out_of_memory, which is also its answer to a factor beyond its
+   !> integer range), or any other status.
+   subroutine umfpack_failure(error, status, stage, n, failure)
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int), intent(in) :: status
+      character(len=*), intent(in) :: stage
+      integer, intent(in) :: n
+      integer, intent(out) :: failure
+      if (status == umfpack_error_out_of_memory) then
+         failure = solver_out_of_memory
+         call failure_of_size(error, 'UMFPACK', failure, stage, n, 0.0_dp, '')
+      else
+         failure = solver_failed
+         call fatal_error(error, 'UMFPACK: '//stage//' failed, status '//to_string(int(status)))
+      end if
+   end subroutine umfpack_failure
 
    !> 1-based original column of the pivot of smallest |u_kk| (column permutation Q of
    !> P R A Q = L U), 0 if UMFPACK cannot return it.

@@ -291,7 +291,7 @@ contains
          return
       end if
       buffer = self%text(first:last)
-      read (buffer, '(f64.0)', iostat=status) value
+      call read_decimal(buffer, value, status)
       if (status /= 0) then
          value = 0
          call self%fail(error, 'expected a number, got "'//self%text(first:last)//'"')
@@ -302,6 +302,21 @@ contains
          call self%fail(error, 'number out of range, got "'//self%text(first:last)//'"')
       end if
    end subroutine read_real
+
+   !> `value` from the decimal number in `buffer` (F edit descriptor), with the floating-point
+   !> traps off: a number beyond the range of real(dp) (1e400) overflows inside the C library's
+   !> conversion, which must give infinity (rejected by the caller) in every build, also in
+   !> one that traps overflow (scripts/check.sh sanitize). The flags raised are cleared; the
+   !> halting mode is restored on return (Fortran 2008, 14.5: by the compiler).
+   subroutine read_decimal(buffer, value, status)
+      use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_set_flag, ieee_usual
+      character(len=*), intent(in) :: buffer
+      real(dp), intent(out) :: value
+      integer, intent(out) :: status
+      call ieee_set_halting_mode(ieee_usual, .false.)
+      read (buffer, '(f64.0)', iostat=status) value
+      call ieee_set_flag(ieee_usual, .false.)
+   end subroutine read_decimal
 
    !> Read a string: a double-quoted text (may hold blanks; quotes removed) or a bare token.
    subroutine read_string(self, value, error)

@@ -3,8 +3,9 @@
 #   check_run.sh FRIX DECK EXPECTED_STATUS "fragment[|fragment...]" [file that must exist ...]
 # Passes when: the exit status equals EXPECTED_STATUS, stderr+stdout contain every fragment
 # (several are separated by '|'),
-# there is no Fortran runtime error or backtrace, and every listed result file exists (the
-# results of converged increments are kept when a run fails).
+# there is no Fortran runtime error or backtrace, every listed result file exists (the
+# results of converged increments are kept when a run fails), and no text result file holds
+# NaN or an infinity (the finite-value guard, docs/solver.md).
 set -u
 frix=$1; deck=$2; expected_status=$3; fragment=$4; shift 4
 out=$(mktemp -d)
@@ -24,6 +25,8 @@ done
 if grep -qE 'Fortran runtime error|Backtrace|SIGSEGV|ERROR STOP' "$out/stdout" "$out/stderr"; then
   echo "FAIL: crash output"; fail=1
 fi
+nonfinite=$(find "$out" -type f ! -name stdout ! -name stderr -exec grep -IliE '(^|[^a-z])(nan|inf|infinity)([^a-z]|$)' {} +)
+if [ -n "$nonfinite" ]; then echo "FAIL: NaN or Inf in $nonfinite"; fail=1; fi
 for f in "$@"; do
   if [ ! -s "$out/$f" ]; then echo "FAIL: result file $f missing"; fail=1; fi
 done
