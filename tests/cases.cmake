@@ -43,8 +43,12 @@ add_test(NAME solver_overflow_load
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/overflow_load.dck 1
                  "is not finite|at node 3, direction x|the results of the 1 converged increments"
                  overflow_load_0001_0001.vtu overflow_load_history.csv overflow_load.pos overflow_load.h5)
+# MAXITER up to the largest integer: the iteration log grows as the iterations go.
+add_test(NAME solver_huge_maxiter
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_maxiter.dck 0
+                 "3 converged increments" huge_maxiter_0002_0002.vtu)
 set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
-                     solver_overflow_load PROPERTIES LABELS regression)
+                     solver_overflow_load solver_huge_maxiter PROPERTIES LABELS regression)
 # SIGINT / SIGTERM stop a run at a safe point (exit 3, files complete, no temporary file);
 # SIGKILL during the first increment leaves the contact CSV's header.
 foreach(signal INT TERM KILL)

@@ -93,6 +93,8 @@ module frix_newton_solver
    end type newton_report_t
 
    real(dp), parameter :: zero_residual_fraction = 1.0e-4_dp
+   !> iterations the report's log holds at first; it doubles when MAXITER allows more
+   integer, parameter :: initial_log_length = 64
    real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
 
 contains
@@ -170,9 +172,7 @@ contains
       where (context%fixed) state%u = context%prescribed
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
-      allocate (report%residual_norms(0:max_iterations), report%relative_norms(0:max_iterations), &
-                report%energy_norms(0:max_iterations), source=0.0_dp)
-      allocate (report%active(0:max_iterations), report%slipping(0:max_iterations), source=0)
+      call reserve_iteration_log(report, min(max_iterations, initial_log_length))
 
       do iteration = 0, max_iterations
          if (stop_requested()) then
@@ -184,6 +184,7 @@ contains
                                    report%failure, error, predictor=iteration == 0)
          if (allocated(error) .or. allocated(report%failure)) return
          call context%matrix%get_diagonal(context%diagonal)
+         if (iteration > ubound(report%residual_norms, 1)) call reserve_iteration_log(report, 2*iteration)
          report%iterations = iteration
          report%residual_norms(iteration) = residual_norm
          report%relative_norms(iteration) = residual_norm/reference
@@ -282,6 +283,33 @@ contains
          end if
       end do
    end subroutine solve_increment
+
+   !> Make the report's per-iteration log hold iterations 0 .. last, keeping what it holds
+   !> (grown as the iterations go: MAXITER may be any positive integer).
+   subroutine reserve_iteration_log(report, last)
+      type(newton_report_t), intent(inout) :: report
+      integer, intent(in) :: last
+      call grow_real(report%residual_norms)
+      call grow_real(report%relative_norms)
+      call grow_real(report%energy_norms)
+      call grow_integer(report%active)
+      call grow_integer(report%slipping)
+   contains
+      subroutine grow_real(values)
+         real(dp), allocatable, intent(inout) :: values(:)
+         real(dp), allocatable :: grown(:)
+         allocate (grown(0:last), source=0.0_dp)
+         if (allocated(values)) grown(0:ubound(values, 1)) = values
+         call move_alloc(grown, values)
+      end subroutine grow_real
+      subroutine grow_integer(values)
+         integer, allocatable, intent(inout) :: values(:)
+         integer, allocatable :: grown(:)
+         allocate (grown(0:last), source=0)
+         if (allocated(values)) grown(0:ubound(values, 1)) = values
+         call move_alloc(grown, values)
+      end subroutine grow_integer
+   end subroutine reserve_iteration_log
 
    !> Path following: the load-factor correction dt of this iteration and the correction
    !> du = a + dt b, where a = K^-1 r is in context%correction (with K still factorized) and

@@ -1,0 +1,23 @@
+# Fuzzing of the deck and gmsh readers and of the analysis behind them (tests/fuzz/README.md):
+# mutated copies of small decks and meshes are run through frix, which must not crash, hang,
+# reject a deck without naming the line, or finish with NaN / Inf in its results.
+# Included from tests/cases.cmake (FRIX_BIN = $<TARGET_FILE:frix>).
+# Python with h5py (Debian's /usr/bin/python3, scripts/setup.sh) so that .h5 results are checked.
+if(EXISTS /usr/bin/python3)
+  set(FRIX_FUZZ_PYTHON /usr/bin/python3)
+else()
+  find_program(FRIX_FUZZ_PYTHON NAMES python3 REQUIRED)
+endif()
+set(frix_fuzz ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_decks.py)
+
+# Default run: 600 mutants of seed 1 (about 25 s on 2 cores).
+add_test(NAME fuzz_decks
+         COMMAND ${FRIX_FUZZ_PYTHON} ${frix_fuzz} --frix ${FRIX_BIN} --seed 1 --count 600 --jobs 2
+                 --failures-dir ${CMAKE_CURRENT_BINARY_DIR}/fuzz_failures)
+set_tests_properties(fuzz_decks PROPERTIES LABELS "regression;fuzz" PROCESSORS 2 TIMEOUT 600)
+
+# Large run: 5000 other mutants (seed 2); label slow, left out of `ctest -LE slow`.
+add_test(NAME fuzz_decks_large
+         COMMAND ${FRIX_FUZZ_PYTHON} ${frix_fuzz} --frix ${FRIX_BIN} --seed 2 --count 5000 --jobs 2
+                 --failures-dir ${CMAKE_CURRENT_BINARY_DIR}/fuzz_failures_large)
+set_tests_properties(fuzz_decks_large PROPERTIES LABELS "fuzz;slow" PROCESSORS 2 TIMEOUT 3600)
