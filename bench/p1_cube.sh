@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# P1 performance benchmark (docs/performance.md, /work/shared/docs/benchmarks.md P1):
+# P1 performance benchmark (docs/performance.md, docs/benchmarks.md P1):
 # linear elastic cube of n x n x n HEX8 (plain HEX8 and HEX8 with EAS 9), base z = 0 fixed in
 # all three directions, uniform dead pressure on the top face z = 1; one step, one increment,
 # linear, so Newton converges after one correction (2 assemblies, 1 factorization, 1 solve).

@@ -2,7 +2,7 @@
 """Reader for Tecgraf's POS3D "neutral file" as written by frix (docs/pos3d.md).
 
 Independent of the Fortran writer: it parses the blocks as the format describes them
-(/work/shared/docs/pos3d-neutral-file.md) into numpy arrays.
+(docs/pos3d.md, "The format") into numpy arrays.
 
     /usr/bin/python3 postproc/pos3d_reader.py FILE [--summary]
 

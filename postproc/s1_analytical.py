@@ -2,7 +2,7 @@
 """Hird & Russell's 1D solution of benchmark S1 (elastic block L >> H on a rigid base with a
 Coulomb interface), and its comparison with a frix run.
 
-Theory (../shared/docs/benchmarks.md S1; Hird & Russell, as quoted by the seed, 6.1.1). A block
+Theory (docs/benchmarks.md S1; Hird & Russell, as quoted by the seed, 6.1.1). A block
 of length L and height H, constrained modulus M = E(1-nu)/((1+nu)(1-2nu)), rests on a rigid
 base through an interface of shear stiffness k_s (stress per length) and shear strength
 tau_max = mu q. The face x = 0 is held, the face x = L carries the pressure p. The axial stress

@@ -3,8 +3,8 @@
 written as a frix deck and as a CalculiX input file with the SAME nodes (ids and coordinates),
 elements (ids and C3D8/HEX8 node order), surfaces, loads and penalty parameters.
 
-Problem (units N, mm, MPa; reconstruction decisions of benchmark P2, /work/shared/docs/
-benchmarks.md, documented in docs/performance-p2.md):
+Problem (units N, mm, MPa; reconstruction decisions of benchmark P2, docs/benchmarks.md,
+documented in docs/performance-p2.md):
 - lower block [0,1] x [0,1] x [0,0.5], n x n x n/2 HEX8, base z = 0 fixed (u = 0);
 - upper block [0.2,0.8] x [0.2,0.8] x [0.5,0.8], m x m x mz HEX8 with m = round(0.7 n) + 1
   rounded to an odd number (never a divisor-compatible division: non-matching with the lower

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# P2 performance benchmark (docs/performance-p2.md; /work/shared/docs/benchmarks.md P2): two
+# P2 performance benchmark (docs/performance-p2.md; docs/benchmarks.md P2): two
 # stacked elastic blocks with non-matching meshes and Coulomb friction, run in frix and in
 # CalculiX (Debian package calculix-ccx, binary ccx) on the same nodes, elements, loads and
 # penalty stiffnesses; writes a markdown table. Not a test: nothing here asserts a time.

@@ -1,4 +1,4 @@
-// Benchmark S1 (docs: shared benchmarks.md, Hird & Russell): elastic block on a rigid base.
+// Benchmark S1 (docs/benchmarks.md S1, Hird & Russell): elastic block on a rigid base.
 // Units m. Block L = 10 (x), width 1 (y), H = 1 (z), x in [0, L], y in [0, 1], z in [0, H],
 // meshed with nx x 1 x nz HEX8 by extrusion (default 30 x 1 x 1, CARAT's mesh).
 //   gmsh -3 s1_block.geo -format msh41 -o s1_block.msh

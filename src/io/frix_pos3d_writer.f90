@@ -1,5 +1,5 @@
 !> POS3D output: Tecgraf's (PUC-Rio) "neutral file", read by POS3D and MView; see docs/pos3d.md
-!> and /work/shared/docs/pos3d-neutral-file.md (no public specification exists: the block
+!> (section "The format"; no public specification exists: the block
 !> layout is the one independent public writers and readers agree on).
 !>
 !> One file per run holds the model (%HEADER, %NODE, %NODE.COORD, %MATERIAL,

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks of one S1 run (benchmark S1, ../shared/docs/benchmarks.md) against Hird & Russell's
+"""Checks of one S1 run (benchmark S1, docs/benchmarks.md) against Hird & Russell's
 1D solution (postproc/s1_analytical.py). Usage: check_s1.py RESULT.pvd VARIANT
 VARIANT: rigid (a), base (b: deformable base), fixed (c: x = 0 fully held, step-2 gains),
 refined (d: 60 x 1 x 2). Prints PASS:/FAIL: lines and "N passed, N failed"; exit 0 if all pass.
