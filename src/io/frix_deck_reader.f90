@@ -1143,12 +1143,33 @@ contains
             end if
          end associate
       end do
-      if (.not. allocated(reader%properties)) allocate (reader%properties(0))
-      reader%properties = [reader%properties, property_t(shape, n_eas, kinematics, material, &
-                                                         line%number, shape_position)]
+      call append_property(reader%properties, shape, n_eas, kinematics, material, line%number, shape_position)
       reader%n_properties = reader%n_properties + 1
       property = reader%n_properties
    end subroutine read_property
+
+   !> `properties` with property_t(shape, n_eas, kinematics, material, line, token) appended,
+   !> through a longer copy and move_alloc rather than `properties = [properties, property_t(...)]`:
+   !> gfortran 12 leaks the allocatable components of a structure constructor inside an array
+   !> constructor.
+   subroutine append_property(properties, shape, n_eas, kinematics, material, line, token)
+      type(property_t), allocatable, intent(inout) :: properties(:)
+      character(len=*), intent(in) :: shape
+      integer, intent(in) :: n_eas, kinematics, material, line, token
+      type(property_t), allocatable :: grown(:)
+      integer :: n
+      n = 0
+      if (allocated(properties)) n = size(properties)
+      allocate (grown(n + 1))
+      if (n > 0) grown(1:n) = properties
+      grown(n + 1)%shape = shape
+      grown(n + 1)%n_eas = n_eas
+      grown(n + 1)%kinematics = kinematics
+      grown(n + 1)%material = material
+      grown(n + 1)%line = line
+      grown(n + 1)%token = token
+      call move_alloc(grown, properties)
+   end subroutine append_property
 
    !> `BLOCK <name> ORIGIN x y z SIZE lx ly lz DIVISIONS nx ny nz [NODE_OFFSET n]
    !> [ELEMENT_OFFSET n]`: node ids start at NODE_OFFSET + 1 (default: after the largest
@@ -2082,7 +2103,7 @@ contains
    subroutine validate_model(reader, model)
       type(reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
-      integer, allocatable :: bad(:), orphans(:), block_of_property(:), missing(:)
+      integer, allocatable :: bad(:), overflowing(:), orphans(:), block_of_property(:), missing(:)
       type(error_t), allocatable :: error
       integer :: k, e, n_blocks, end_line
 
@@ -2133,8 +2154,10 @@ contains
       if (.not. reader%property_failed) call report_elements(reader, model, missing, 'has no material/property')
 
       if (model%mesh%n_elements > 0) then
-         call check_hex8_jacobians(model%mesh, bad)
+         call check_hex8_jacobians(model%mesh, bad, overflowing)
          call report_elements(reader, model, bad, 'has a non-positive Jacobian (inverted or degenerate)')
+         call report_elements(reader, model, overflowing, 'has a Jacobian beyond the range of real '// &
+                              'numbers (coordinates too large)')
       end if
 
       if (model%mesh%n_nodes > 0 .and. .not. reader%mesh_failed) then

@@ -90,8 +90,7 @@ contains
       class(vtk_series_t), intent(inout) :: self
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:, :)
-      if (.not. allocated(self%point_fields)) allocate (self%point_fields(0))
-      self%point_fields = [self%point_fields, named_field_t(name, values)]
+      call append_field(self%point_fields, name, values)
    end subroutine add_point_field
 
    !> Add an element field (values(n_components, n_elements)) to the next increment.
@@ -99,9 +98,48 @@ contains
       class(vtk_series_t), intent(inout) :: self
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:, :)
-      if (.not. allocated(self%cell_fields)) allocate (self%cell_fields(0))
-      self%cell_fields = [self%cell_fields, named_field_t(name, values)]
+      call append_field(self%cell_fields, name, values)
    end subroutine add_cell_field
+
+   !> `fields` with (name, values) appended. The entries move into a longer array (move_alloc)
+   !> instead of `fields = [fields, named_field_t(name, values)]`: gfortran 12 leaks the
+   !> allocatable components of a structure constructor inside an array constructor.
+   subroutine append_field(fields, name, values)
+      type(named_field_t), allocatable, intent(inout) :: fields(:)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      type(named_field_t), allocatable :: grown(:)
+      integer :: i, n
+      n = 0
+      if (allocated(fields)) n = size(fields)
+      allocate (grown(n + 1))
+      do i = 1, n
+         call move_alloc(fields(i)%name, grown(i)%name)
+         call move_alloc(fields(i)%values, grown(i)%values)
+      end do
+      grown(n + 1)%name = name
+      grown(n + 1)%values = values
+      call move_alloc(grown, fields)
+   end subroutine append_field
+
+   !> `datasets` with (file_name, time) appended (moved, as in append_field).
+   subroutine append_dataset(datasets, file_name, time)
+      type(dataset_entry_t), allocatable, intent(inout) :: datasets(:)
+      character(len=*), intent(in) :: file_name
+      real(dp), intent(in) :: time
+      type(dataset_entry_t), allocatable :: grown(:)
+      integer :: i, n
+      n = 0
+      if (allocated(datasets)) n = size(datasets)
+      allocate (grown(n + 1))
+      do i = 1, n
+         call move_alloc(datasets(i)%file_name, grown(i)%file_name)
+         grown(i)%time = datasets(i)%time
+      end do
+      grown(n + 1)%file_name = file_name
+      grown(n + 1)%time = time
+      call move_alloc(grown, datasets)
+   end subroutine append_dataset
 
    !> Write `<base>_<step>_<increment>.vtu` for one converged increment and rewrite the `.pvd`.
    subroutine write_increment(self, mesh, step, increment, time, displacement, reaction, stress, strain, error)
@@ -180,7 +218,7 @@ contains
       call close_written_file(unit, stat, 'VTK file "'//path//'"', error, close_iostat=.true.)
       if (allocated(error)) return
 
-      self%datasets = [self%datasets, dataset_entry_t(file_name, time)]
+      call append_dataset(self%datasets, file_name, time)
       deallocate (self%point_fields, self%cell_fields)
       allocate (self%point_fields(0), self%cell_fields(0))
       call write_collection(self, error)

@@ -21,8 +21,14 @@ module frix_testing
       end subroutine test_procedure
    end interface
 
+   !> The longest test or suite name. Names are fixed-length (blank-padded) rather than
+   !> allocatable: the suites build their lists as array constructors of `new_unittest` /
+   !> `new_testsuite` results, and gfortran 12 leaks the allocatable components of function
+   !> results in an array constructor (LeakSanitizer, scripts/check.sh sanitize).
+   integer, parameter :: name_length = 160
+
    type :: unittest_t
-      character(len=:), allocatable :: name
+      character(len=name_length) :: name = ''
       procedure(test_procedure), pointer, nopass :: test => null()
    end type unittest_t
 
@@ -34,7 +40,7 @@ module frix_testing
    end interface
 
    type :: testsuite_t
-      character(len=:), allocatable :: name
+      character(len=name_length) :: name = ''
       procedure(collect_interface), pointer, nopass :: collect => null()
    end type testsuite_t
 
@@ -48,6 +54,7 @@ contains
       character(len=*), intent(in) :: name
       procedure(test_procedure) :: test
       type(unittest_t) :: unittest
+      call check_name_length(name)
       unittest%name = name
       unittest%test => test
    end function new_unittest
@@ -56,9 +63,18 @@ contains
       character(len=*), intent(in) :: name
       procedure(collect_interface) :: collect
       type(testsuite_t) :: suite
+      call check_name_length(name)
       suite%name = name
       suite%collect => collect
    end function new_testsuite
+
+   subroutine check_name_length(name)
+      character(len=*), intent(in) :: name
+      if (len(name) > name_length) then
+         write (0, '(a)') 'frix_testing: name longer than '//to_string(name_length)//' characters: '//name
+         error stop 2
+      end if
+   end subroutine check_name_length
 
    subroutine check_logical(error, condition, message)
       type(error_t), allocatable, intent(out) :: error
@@ -108,18 +124,18 @@ contains
       passed = 0
       failed = 0
       do i = 1, size(suites)
-         if (len_trim(only) > 0 .and. trim(only) /= suites(i)%name) cycle
+         if (len_trim(only) > 0 .and. trim(only) /= trim(suites(i)%name)) cycle
          call suites(i)%collect(tests)
          do j = 1, size(tests)
             call tests(j)%test(error)
             if (allocated(error)) then
                failed = failed + 1
-               write (*, '(a)') '  FAIL  '//suites(i)%name//' / '//tests(j)%name
+               write (*, '(a)') '  FAIL  '//trim(suites(i)%name)//' / '//trim(tests(j)%name)
                write (*, '(a)') '        '//error%message
                deallocate (error)
             else
                passed = passed + 1
-               write (*, '(a)') '  ok    '//suites(i)%name//' / '//tests(j)%name
+               write (*, '(a)') '  ok    '//trim(suites(i)%name)//' / '//trim(tests(j)%name)
             end if
          end do
       end do

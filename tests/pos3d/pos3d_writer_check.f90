@@ -98,6 +98,8 @@ program pos3d_writer_check
    call bad%close(error)
    call expect_success('close bad.pos')
 
+   ! main-program variables outlive the program's end: freed here for LeakSanitizer
+   deallocate (directory, element_material, materials, bad_displacement)
    write (*, '(i0,a,i0,a)') n_passed, ' passed, ', n_failed, ' failed'
    if (n_failed > 0) error stop 1
 

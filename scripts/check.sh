@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Extra checks beyond scripts/test.sh.
+#   scripts/check.sh sanitize [extra ctest arguments]
+#       Installs what is missing and builds frix and its tests in build-sanitize with the
+#       CMake build type Sanitize (scripts/setup.sh build-sanitize Sanitize): AddressSanitizer
+#       with LeakSanitizer, UBSan, gfortran's -fcheck=all and floating-point traps (invalid,
+#       division by zero, overflow). Then runs the default test set there (every ctest except
+#       those labelled `slow`, two at a time). Any sanitizer report (heap/stack overflow,
+#       use after free, a leak at exit, undefined behaviour) aborts the program (SIGABRT), which
+#       fails its test; so does a floating-point trap (SIGFPE) or a runtime check. Prints the
+#       wall time. Exit status: ctest's (0 when every test passed).
+#       Example: scripts/check.sh sanitize -R unit_io     (only the matching tests)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+usage() { echo "usage: $0 sanitize [extra ctest arguments]" >&2; exit 2; }
+[ $# -ge 1 ] || usage
+mode=$1
+shift
+
+case "$mode" in
+  sanitize)
+    start=$(date +%s)
+    build_dir=$root/build-sanitize
+    "$root/scripts/setup.sh" "$build_dir" Sanitize
+    built=$(date +%s)
+    # abort_on_error: a report ends the program with SIGABRT (exit status 134), which every
+    # test script takes for a crash (an error case also accepts any status 1..127, so a plain
+    # exit code would not do). Settings already in the environment are appended: they win.
+    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:abort_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
+    status=0
+    (cd "$build_dir" && ctest --output-on-failure -LE slow -j2 "$@") || status=$?
+    end=$(date +%s)
+    echo "check.sh sanitize: build $((built - start)) s, tests $((end - built)) s, wall time $((end - start)) s"
+    exit $status
+    ;;
+  *)
+    usage
+    ;;
+esac
