@@ -1,4 +1,7 @@
 # Deck-level tests. The frix binary is run on decks; each family has its own label.
+math(EXPR scaled_60 "60 * ${FRIX_TIMEOUT_SCALE}")
+math(EXPR scaled_300 "300 * ${FRIX_TIMEOUT_SCALE}")
+math(EXPR scaled_600 "600 * ${FRIX_TIMEOUT_SCALE}")
 set(FRIX_BIN $<TARGET_FILE:frix>)
 
 # Error cases: every tests/errors/*.dck must be rejected with the message given in its
@@ -55,14 +58,14 @@ foreach(signal INT TERM KILL)
   add_test(NAME solver_stop_sig${signal}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/stop_signal_test.sh ${FRIX_BIN}
                    ${CMAKE_CURRENT_SOURCE_DIR}/solver/stop_signal.dck ${signal})
-  set_tests_properties(solver_stop_sig${signal} PROPERTIES LABELS regression TIMEOUT 300)
+  set_tests_properties(solver_stop_sig${signal} PROPERTIES LABELS regression TIMEOUT ${scaled_300})
 endforeach()
 # A system too large for CHOLMOD's 32-bit interface is reported as such (0.9 M equations,
 # 1.4 GB: slow).
 add_test(NAME solver_too_large_cholmod
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/too_large_cholmod.dck 1
                  "CHOLMOD: the problem is too large for the solver|902289 equations")
-set_tests_properties(solver_too_large_cholmod PROPERTIES LABELS "regression;slow" TIMEOUT 600)
+set_tests_properties(solver_too_large_cholmod PROPERTIES LABELS "regression;slow" TIMEOUT ${scaled_600})
 add_test(NAME solver_limit_point_values
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck)
@@ -81,7 +84,7 @@ add_test(NAME solver_path_following_target_near_start
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_following_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/path_target_near_start.dck 250 near)
 set_tests_properties(solver_path_following_limit_point solver_path_following_landing
-                     solver_path_following_target_near_start PROPERTIES LABELS regression TIMEOUT 60)
+                     solver_path_following_target_near_start PROPERTIES LABELS regression TIMEOUT ${scaled_60})
 
 # POS3D neutral file: writer checks on synthetic data, and a run read back independently.
 add_executable(pos3d_writer_check ${PROJECT_SOURCE_DIR}/tests/pos3d/pos3d_writer_check.f90)

@@ -590,7 +590,10 @@ contains
       pure function cell_of(point) result(index3)
          real(dp), intent(in) :: point(3)
          integer :: index3(3)
-         index3 = min(n_cells, max(1, int((point - origin)/cell_size) + 1))
+         real(dp) :: position(3)
+         ! clamped before the conversion, which is undefined for reals beyond the integers
+         position = min(real(n_cells, dp), max(1.0_dp, (point - origin)/cell_size + 1.0_dp))
+         index3 = int(position)
       end function cell_of
    end subroutine assign_faces
 

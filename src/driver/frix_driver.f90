@@ -55,10 +55,6 @@ contains
       type(run_options_t), intent(in) :: options
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
-      type(analysis_state_t) :: state
-      type(newton_context_t) :: context
-      type(results_output_t) :: output
-      integer :: step, first_step, first_increment
       real(dp) :: start
 
       start = wall_clock_seconds()
@@ -68,6 +64,41 @@ contains
          if (.not. options%quiet) write (*, '(a)') 'frix: '//options%deck_path//': deck is valid'
          return
       end if
+      call run_analysis(model, options, start, error)
+   end subroutine run_deck
+
+   !> The analysis of a model read from a deck: setup, the steps, the results.
+   !>
+   !> It computes with the floating-point traps off. Everything here computes with what the
+   !> deck gives (loads of 1e308, penalties, coordinates): an overflow or an invalid operation
+   !> is a property of the data, not a defect of frix, and must end in the same located failure
+   !> whatever the build's trap flags (-ffpe-trap in the Debug and Sanitize builds). The
+   !> finite-value guard of the Newton loop (check_finite in frix_newton_solver) stops an
+   !> increment at the first non-finite force, tangent entry, correction, energy or
+   !> displacement, the driver cuts back, and the output checks every field before writing
+   !> (docs/solver.md, "Non-finite values"). The flags raised are cleared; the halting mode is
+   !> restored on return (Fortran 2008, 14.5: by the compiler).
+   subroutine run_analysis(model, options, start, error)
+      use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_set_flag, ieee_usual
+      type(model_t), intent(in) :: model
+      type(run_options_t), intent(in) :: options
+      real(dp), intent(in) :: start   !! wall clock at the start of the run [s]
+      type(error_t), allocatable, intent(out) :: error
+      call ieee_set_halting_mode(ieee_usual, .false.)
+      call analyse(model, options, start, error)
+      call ieee_set_flag(ieee_usual, .false.)
+   end subroutine run_analysis
+
+   !> run_analysis's work: state, Newton context, output, then every step.
+   subroutine analyse(model, options, start, error)
+      type(model_t), intent(in) :: model
+      type(run_options_t), intent(in) :: options
+      real(dp), intent(in) :: start   !! wall clock at the start of the run [s]
+      type(error_t), allocatable, intent(out) :: error
+      type(analysis_state_t) :: state
+      type(newton_context_t) :: context
+      type(results_output_t) :: output
+      integer :: step, first_step, first_increment
 
       call create_analysis_state(model, state)
       call setup_newton(model, context, error)
@@ -101,7 +132,7 @@ contains
             ' converged increments; results in '//results_base(options)//'*'
          call print_statistics(context, wall_clock_seconds() - start)
       end if
-   end subroutine run_deck
+   end subroutine analyse
 
    !> The closing statistics block (read by bench/ scripts: keep the `frix: stat` keys).
    subroutine print_statistics(context, total_seconds)
@@ -301,8 +332,8 @@ contains
    !> eps_T) and stiffens the sliding modes, which is where Newton failed with low mu
    !> (docs/verification/s3.md); each stage moves its solution a little. A failing stage fails
    !> the attempt (then the caller cuts back). `iterations`: Newton iterations spent in all.
-   subroutine continued_increment(model, context, state, time, max_iterations, label, report, iterations, &
-                                  error, path)
+   subroutine attempt_increment(model, context, state, time, max_iterations, label, report, iterations, &
+                                error, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -342,32 +373,6 @@ contains
          stage_time = state%time
       end do
       context%contact%friction_scale = 1.0_dp
-   end subroutine continued_increment
-
-   !> continued_increment with the floating-point traps off. An increment computes with what
-   !> the deck gives (loads of 1e308, penalties, coordinates): an overflow or an invalid
-   !> operation there is a property of the data, not a defect of frix, and must end in the same
-   !> located failure whatever the build's trap flags (-ffpe-trap in the Debug and Sanitize
-   !> builds). The finite-value guard of the Newton loop (check_finite in frix_newton_solver)
-   !> stops the increment at the first non-finite force, tangent entry, correction, energy or
-   !> displacement, and the driver cuts back. The flags raised are cleared; the halting mode is
-   !> restored on return (Fortran 2008, 14.5: by the compiler).
-   subroutine attempt_increment(model, context, state, time, max_iterations, label, report, iterations, &
-                                error, path)
-      use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_set_flag, ieee_usual
-      type(model_t), intent(in) :: model
-      type(newton_context_t), intent(inout) :: context
-      type(analysis_state_t), intent(inout) :: state
-      real(dp), intent(in) :: time
-      integer, intent(in) :: max_iterations
-      character(len=*), intent(in) :: label
-      type(newton_report_t), intent(out) :: report
-      integer, intent(out) :: iterations
-      type(error_t), allocatable, intent(out) :: error
-      type(path_constraint_t), intent(in), optional :: path
-      call ieee_set_halting_mode(ieee_usual, .false.)
-      call continued_increment(model, context, state, time, max_iterations, label, report, iterations, error, path)
-      call ieee_set_flag(ieee_usual, .false.)
    end subroutine attempt_increment
 
    !> The error that ends a run stopped by SIGINT or SIGTERM (the program's main exits with

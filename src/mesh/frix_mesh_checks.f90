@@ -27,26 +27,38 @@ contains
    !> MacNeal & Harder has one such element (tests/verification V1). The trilinear map is
    !> x(xi) = sum_a N_a(xi) x_a, N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta)/8. A mirrored
    !> mesh (node order clockwise) has det < 0 everywhere.
-   subroutine check_hex8_jacobians(mesh, bad_elements)
+   !> `overflowing`: the elements whose determinant is not finite (coordinates so large that
+   !> their products leave the range of real numbers); computed with the floating-point traps
+   !> off (a build that traps overflow reports them too), the flags cleared on return.
+   subroutine check_hex8_jacobians(mesh, bad_elements, overflowing)
+      use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_set_flag, ieee_usual
+      use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
       type(mesh_t), intent(in) :: mesh
       integer, allocatable, intent(out) :: bad_elements(:)
-      logical, allocatable :: is_bad(:)
-      real(dp) :: points(3, 9), x(3, 8)
+      integer, allocatable, intent(out) :: overflowing(:)
+      logical, allocatable :: is_bad(:), is_infinite(:)
+      real(dp) :: points(3, 9), x(3, 8), determinant
       integer :: element, point
+      call ieee_set_halting_mode(ieee_usual, .false.)
       points(:, 1:8) = hex8_natural/sqrt(3.0_dp)
       points(:, 9) = 0
-      allocate (is_bad(mesh%n_elements))
+      allocate (is_bad(mesh%n_elements), is_infinite(mesh%n_elements), source=.false.)
       do element = 1, mesh%n_elements
          x = mesh%coords(:, mesh%connectivity(:, element))
-         is_bad(element) = .false.
          do point = 1, 9
-            if (jacobian_determinant(x, points(:, point)) <= 0) then
+            determinant = jacobian_determinant(x, points(:, point))
+            if (.not. ieee_is_finite(determinant)) then
+               is_infinite(element) = .true.
+               exit
+            else if (determinant <= 0) then
                is_bad(element) = .true.
                exit
             end if
          end do
       end do
       bad_elements = pack([(element, element=1, mesh%n_elements)], is_bad)
+      overflowing = pack([(element, element=1, mesh%n_elements)], is_infinite)
+      call ieee_set_flag(ieee_usual, .false.)
    end subroutine check_hex8_jacobians
 
    !> det(dx/dxi) of the trilinear HEX8 map with nodal coordinates x(3, 8) at natural point xi.

@@ -3,6 +3,8 @@
 # inputs/s3_punch and checks it with tests/contact_s3/check_s3.py: the full load reached,
 # global equilibrium in z, and (where a stored frix value exists) the punch-top centre
 # displacement and its mu-independence.
+math(EXPR scaled_300 "300 * ${FRIX_TIMEOUT_SCALE}")
+math(EXPR scaled_600 "600 * ${FRIX_TIMEOUT_SCALE}")
 set(s3_dir ${CMAKE_CURRENT_SOURCE_DIR}/contact_s3)
 set(s3_decks ${PROJECT_SOURCE_DIR}/inputs/s3_punch)
 set(s3_reference ${s3_dir}/reference_coarse_epsn1e6.txt)
@@ -16,7 +18,7 @@ foreach(mu 0.5 0.1 0.25)
   add_test(NAME contact_s3_coarse_mu${mu}
            COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu${mu}.dck 1101 ${mu}
                    --reference ${s3_dir}/reference_coarse.txt)
-  set_tests_properties(contact_s3_coarse_mu${mu} PROPERTIES LABELS "regression;contact" TIMEOUT 300)
+  set_tests_properties(contact_s3_coarse_mu${mu} PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_300})
 endforeach()
 
 # Facet normals, mu = 0.1 with friction continuation (MU_CONTINUATION 5 3.5 2.5 1.8 1.3,
@@ -28,13 +30,13 @@ endforeach()
 add_test(NAME contact_s3_coarse_mu0.1_continuation
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.1_continuation.dck 1101 0.1
                  --stop-between 0.785 0.7945 --expect-log "friction continuation: mu x")
-set_tests_properties(contact_s3_coarse_mu0.1_continuation PROPERTIES LABELS "regression;contact" TIMEOUT 600)
+set_tests_properties(contact_s3_coarse_mu0.1_continuation PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_600})
 
 # Without friction the coarse model has a limit point at t = 0.6106: path following (CONTROL
 # Path on the punch corner's z displacement) passes it and ends on the falling branch (25 s).
 add_test(NAME contact_s3_coarse_mu0_path
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0_path.dck --path-limit 0.61067)
-set_tests_properties(contact_s3_coarse_mu0_path PROPERTIES LABELS "regression;contact" TIMEOUT 300)
+set_tests_properties(contact_s3_coarse_mu0_path PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_300})
 # With mu = 0.1 the facet model's maximum is t = 0.7919, below the full load: why facet
 # normals cannot pass (11 min: slow).
 add_test(NAME contact_s3_coarse_mu0.1_path
@@ -47,7 +49,7 @@ foreach(mu 0.5 0.1 0.25)
   add_test(NAME contact_s3_coarse_mu${mu}_epsn1e6
            COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu${mu}_epsn1e6.dck 1101 ${mu}
                    --reference ${s3_reference})
-  set_tests_properties(contact_s3_coarse_mu${mu}_epsn1e6 PROPERTIES LABELS "regression;contact" TIMEOUT 300)
+  set_tests_properties(contact_s3_coarse_mu${mu}_epsn1e6 PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_300})
 endforeach()
 set_tests_properties(contact_s3_coarse_mu0.1_epsn1e6 contact_s3_coarse_mu0.25_epsn1e6 PROPERTIES DISABLED TRUE)
 

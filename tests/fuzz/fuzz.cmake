@@ -3,6 +3,7 @@
 # reject a deck without naming the line, or finish with NaN / Inf in its results.
 # Included from tests/cases.cmake (FRIX_BIN = $<TARGET_FILE:frix>).
 # Python with h5py (Debian's /usr/bin/python3, scripts/setup.sh) so that .h5 results are checked.
+math(EXPR scaled_600 "600 * ${FRIX_TIMEOUT_SCALE}")
 if(EXISTS /usr/bin/python3)
   set(FRIX_FUZZ_PYTHON /usr/bin/python3)
 else()
@@ -14,7 +15,7 @@ set(frix_fuzz ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_decks.py)
 add_test(NAME fuzz_decks
          COMMAND ${FRIX_FUZZ_PYTHON} ${frix_fuzz} --frix ${FRIX_BIN} --seed 1 --count 600 --jobs 2
                  --failures-dir ${CMAKE_CURRENT_BINARY_DIR}/fuzz_failures)
-set_tests_properties(fuzz_decks PROPERTIES LABELS "regression;fuzz" PROCESSORS 2 TIMEOUT 600)
+set_tests_properties(fuzz_decks PROPERTIES LABELS "regression;fuzz" PROCESSORS 2 TIMEOUT ${scaled_600})
 
 # Large run: 5000 other mutants (seed 2); label slow, left out of `ctest -LE slow`.
 add_test(NAME fuzz_decks_large

@@ -23,6 +23,7 @@ contains
                new_unittest('mirrored_element_flagged', test_mirrored_element), &
                new_unittest('mirrored_mesh_flags_all', test_mirrored_mesh), &
                new_unittest('concave_corner_flagged', test_concave_corner), &
+               new_unittest('huge_coordinates_overflow', test_huge_coordinates), &
                new_unittest('orphan_node', test_orphan_node), &
                new_unittest('lookups', test_lookups), &
                new_unittest('bounding_box', test_bounding_box), &
@@ -34,10 +35,10 @@ contains
    subroutine test_valid_jacobians(error)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t) :: mesh
-      integer, allocatable :: bad(:)
+      integer, allocatable :: bad(:), overflowing(:)
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
-      call check_hex8_jacobians(mesh, bad)
+      call check_hex8_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 0, 'no inverted element in block_v22.msh')
    end subroutine test_valid_jacobians
 
@@ -46,11 +47,11 @@ contains
    subroutine test_mirrored_element(error)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t) :: mesh
-      integer, allocatable :: bad(:)
+      integer, allocatable :: bad(:), overflowing(:)
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%connectivity(:, 2) = mesh%connectivity([5, 6, 7, 8, 1, 2, 3, 4], 2)
-      call check_hex8_jacobians(mesh, bad)
+      call check_hex8_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 1, 'one element flagged, got '//to_string(size(bad)))
       if (allocated(error)) return
       call check(error, bad(1) == 2, 'element 2 flagged')
@@ -60,11 +61,11 @@ contains
    subroutine test_mirrored_mesh(error)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t) :: mesh
-      integer, allocatable :: bad(:)
+      integer, allocatable :: bad(:), overflowing(:)
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%coords(1, :) = -mesh%coords(1, :)
-      call check_hex8_jacobians(mesh, bad)
+      call check_hex8_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 2, 'both elements flagged, got '//to_string(size(bad)))
    end subroutine test_mirrored_mesh
 
@@ -76,15 +77,30 @@ contains
    subroutine test_concave_corner(error)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t) :: mesh
-      integer, allocatable :: bad(:)
+      integer, allocatable :: bad(:), overflowing(:)
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%coords(:, mesh%connectivity(7, 2)) = [1.1_dp, 0.1_dp, 0.1_dp]
-      call check_hex8_jacobians(mesh, bad)
+      call check_hex8_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 1, 'one element flagged, got '//to_string(size(bad)))
       if (allocated(error)) return
       call check(error, bad(1) == 2, 'element 2 flagged')
    end subroutine test_concave_corner
+
+   !> The block scaled by 1e150: det J = (1e150/2)^3 overflows. It is reported as overflowing, not as inverted, and no trap fires in a build
+   !> that traps overflow.
+   subroutine test_huge_coordinates(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      integer, allocatable :: bad(:), overflowing(:)
+      call read_block('block_v22.msh', mesh, error)
+      if (allocated(error)) return
+      mesh%coords = 1.0e150_dp*mesh%coords
+      call check_hex8_jacobians(mesh, bad, overflowing)
+      call check(error, size(bad) == 0, 'no element inverted, got '//to_string(size(bad)))
+      if (allocated(error)) return
+      call check(error, size(overflowing) == 2, 'both elements overflow, got '//to_string(size(overflowing)))
+   end subroutine test_huge_coordinates
 
    subroutine test_orphan_node(error)
       type(error_t), allocatable, intent(out) :: error
