@@ -1,5 +1,6 @@
 !> frix: runs a CARAT-style input deck.
 !>   frix DECK [--out DIR] [--check] [--quiet] [--restart FILE.h5 --from STEP.INCREMENT]
+!>   frix --version   (version, compiler and libraries; exit status 0)
 !> Exit status 0 on success, 1 on a deck error or a failed analysis, 2 on a usage error, 3 when
 !> the run was stopped by SIGINT or SIGTERM (its converged increments written).
 !> This is the only place where errors are printed.
@@ -8,6 +9,8 @@ program frix
    use frix_driver, only: run_options_t, run_deck
    use frix_process, only: exit_with_status, keep_freed_memory
    use frix_stop_request, only: install_stop_handlers, stop_requested
+   use frix_version_info, only: write_version_report
+   use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    type(run_options_t) :: options
    type(error_t), allocatable :: error
@@ -16,6 +19,10 @@ program frix
    call keep_freed_memory()
    call install_stop_handlers()
    call parse_command_line(options, status)
+   if (status == 3) then
+      call write_version_report(output_unit)
+      call exit_with_status(0)
+   end if
    if (status /= 0) then
       call print_usage()
       if (status == 1) call exit_with_status(0)
@@ -32,7 +39,7 @@ contains
 
    subroutine parse_command_line(options, status)
       type(run_options_t), intent(out) :: options
-      integer, intent(out) :: status  !! 0 ok, 1 help asked, 2 usage error
+      integer, intent(out) :: status  !! 0 ok, 1 help asked, 2 usage error, 3 version asked
       character(len=:), allocatable :: argument, value
       integer :: i, n
       status = 0
@@ -44,6 +51,9 @@ contains
          select case (argument)
          case ('-h', '--help')
             status = 1
+            return
+         case ('--version')
+            status = 3
             return
          case ('--check')
             options%check_only = .true.
@@ -134,6 +144,7 @@ contains
 
    subroutine print_usage()
       write (*, '(a)') 'usage: frix DECK [--out DIR] [--check] [--quiet] [--restart FILE.h5 --from S.K]'
+      write (*, '(a)') '       frix --version'
       write (*, '(a)') '  DECK       input deck (CARAT-style sections, see docs/deck-format.md)'
       write (*, '(a)') '  --out DIR  write results into DIR (default: beside the deck)'
       write (*, '(a)') '  --check    read and validate the deck, solve nothing'
@@ -141,5 +152,6 @@ contains
       write (*, '(a)') '  --restart FILE.h5 --from S.K'
       write (*, '(a)') '             continue from converged increment K of step S stored in the'
       write (*, '(a)') '             HDF5 results of an earlier run (RESULTS: HDF5 Yes) of the same deck'
+      write (*, '(a)') '  --version  print the version of frix, the compiler and the libraries, and exit'
    end subroutine print_usage
 end program frix

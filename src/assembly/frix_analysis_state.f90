@@ -1,8 +1,15 @@
-!> The solution state of an analysis: displacements and the per-element internal variables,
-!> both at the last converged increment ("committed") and at the current iterate.
+!> The solution state of an analysis, with one interface for the driver: the displacements,
+!> the per-element internal variables (EAS parameters), the material history and the contact
+!> state (the passes' search results and friction branches, and their committed anchors and
+!> slip), both at the last converged increment ("committed") and at the current iterate.
+!> `commit_state` accepts the iterate, `restore_state` returns to the committed state after a
+!> failed increment; restart files hold `state_arrays` and give them back through
+!> `set_state_arrays` (frix_state_restart).
 module frix_analysis_state
    use frix_kinds, only: dp
+   use frix_error, only: error_t
    use frix_model, only: model_t
+   use frix_contact_assembly, only: contact_system_t, setup_contact, commit_contact
    implicit none
    private
 
@@ -17,14 +24,19 @@ module frix_analysis_state
       real(dp), allocatable :: committed_alpha(:, :)
       real(dp), allocatable :: history(:, :, :)           !! (max n_state, n_points, n_elements) current
       real(dp), allocatable :: committed_history(:, :, :) !! at the last converged increment
+      logical :: has_contact = .false.
+      !> contact search, slip history, contact assembly; its committed part (anchors, slip;
+      !> room for Lagrange multipliers) changes only in commit_state
+      type(contact_system_t) :: contact
    end type analysis_state_t
 
 contains
 
-   !> Zero state sized for `model`.
-   subroutine create_analysis_state(model, state)
+   !> Zero state sized for `model`, with its contact passes set up (docs/contact.md).
+   subroutine create_analysis_state(model, state, error)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(out) :: state
+      type(error_t), allocatable, intent(out) :: error
       integer :: b, max_enhanced, max_state, max_points, n_equations
       max_enhanced = 0
       max_state = 0
@@ -44,6 +56,8 @@ contains
       state%committed_u = state%u
       state%committed_alpha = state%alpha
       state%committed_history = state%history
+      if (allocated(model%contact_pairs)) state%has_contact = size(model%contact_pairs) > 0
+      if (state%has_contact) call setup_contact(model, state%contact, error)
    end subroutine create_analysis_state
 
    !> Accept the current iterate as converged.
@@ -53,9 +67,12 @@ contains
       state%committed_u = state%u
       state%committed_alpha = state%alpha
       state%committed_history = state%history
+      if (state%has_contact) call commit_contact(state%contact)
    end subroutine commit_state
 
-   !> Go back to the last converged increment (after a failed increment).
+   !> Go back to the last converged increment (after a failed increment). The contact
+   !> system's committed part is untouched by the iterations (each search and assembly starts
+   !> from it), so it has nothing to restore.
    subroutine restore_state(state)
       type(analysis_state_t), intent(inout) :: state
       state%time = state%committed_time

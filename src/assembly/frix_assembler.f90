@@ -11,7 +11,7 @@ module frix_assembler
    implicit none
    private
 
-   public :: assemble_internal, max_nodes_per_element
+   public :: assemble_internal, max_nodes_per_element, internal_tangent_symmetric
 
    integer, parameter :: max_nodes_per_element = 8
 
@@ -91,4 +91,17 @@ contains
          end associate
       end do
    end subroutine assemble_internal
+
+   !> Whether d fint / du is symmetric: every material in use says its tangent is (the
+   !> elements then mirror their upper blocks, frix_hex8). Loads (follower pressure) and
+   !> contact add their own unsymmetric parts; the Newton loop combines the three.
+   logical function internal_tangent_symmetric(model)
+      type(model_t), intent(in) :: model
+      integer :: b
+      internal_tangent_symmetric = .true.
+      do b = 1, size(model%blocks)
+         if (.not. model%materials(model%blocks(b)%material)%law%symmetric_tangent()) &
+            internal_tangent_symmetric = .false.
+      end do
+   end function internal_tangent_symmetric
 end module frix_assembler

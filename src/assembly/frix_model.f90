@@ -17,11 +17,6 @@ module frix_model
    public :: model_t, element_block_t, dirichlet_t, nodal_force_t, pressure_load_t
    public :: body_force_t, load_curve_t, step_t, solver_controls_t, results_request_t
    public :: history_request_t, curve_factor, contact_pair_t
-   public :: solver_auto, solver_cholmod, solver_umfpack
-
-   integer, parameter :: solver_auto = 0     !! CHOLMOD if the tangent is symmetric, else UMFPACK
-   integer, parameter :: solver_cholmod = 1
-   integer, parameter :: solver_umfpack = 2
 
    !> Elements sharing one formulation and one material.
    type :: element_block_t
@@ -86,7 +81,8 @@ module frix_model
       real(dp) :: tol_residual = 1.0e-8_dp     !! ||r|| <= tol * max(||f_ext||, ||reactions||)
       real(dp) :: tol_displacement = 1.0e-8_dp !! ||du|| <= tol * ||u||
       integer :: max_cutbacks = 6              !! halvings of an increment before giving up
-      integer :: linear_solver = solver_auto
+      !> deck keyword of the linear solver (frix_linear_solver_registry), upper case
+      character(len=16) :: linear_solver = 'AUTO'
       integer :: default_kinematics = kinematics_linear
       !> MU_CONTINUATION f_1 > f_2 > ... > f_m > 1: after a failed increment on a model with
       !> frictional contact, solve it again with the friction coefficients scaled by f_1, ..., f_m

@@ -9,12 +9,16 @@
 !> whose dp_N term makes the contact tangent unsymmetric.
 module frix_coulomb_friction
    use frix_kinds, only: dp
+   use frix_error, only: error_t, append_error
+   use frix_strings, only: to_string
+   use frix_property_list, only: property_list_t, property_spec_t, spec_names
    use frix_dual_number, only: dual_t, dual_norm, dual_constant, operator(*), operator(/)
    use frix_friction_law, only: friction_law_t, branch_free, branch_stick, branch_slip
    implicit none
    private
 
-   public :: coulomb_friction_t, new_coulomb_friction
+   public :: coulomb_friction_t, new_coulomb_friction, coulomb_from_properties, frictionless_from_properties
+   public :: coulomb_properties, frictionless_properties, coulomb_by_default, frictionless_by_default
 
    type, extends(friction_law_t) :: coulomb_friction_t
       real(dp) :: coefficient = 0.0_dp   !! mu (dimensionless, >= 0)
@@ -36,6 +40,62 @@ contains
          law%name = 'FRICTIONLESS'
       end if
    end function new_coulomb_friction
+
+   !> COULOMB's property MU (>= 0; a contact pair without MU gets 0).
+   function coulomb_properties() result(specs)
+      type(property_spec_t), allocatable :: specs(:)
+      allocate (specs(1))
+      specs(1)%name = 'MU'
+      specs(1)%what = 'MU'
+      specs(1)%bounded = .true.
+      specs(1)%bound_message = 'MU must not be negative'
+      specs(1)%has_default = .true.
+   end function coulomb_properties
+
+   !> FRICTIONLESS takes no property.
+   function frictionless_properties() result(specs)
+      type(property_spec_t), allocatable :: specs(:)
+      allocate (specs(0))
+   end function frictionless_properties
+
+   !> A contact pair without LAW is Coulomb when it gives MU > 0.
+   logical function coulomb_by_default(given)
+      type(property_list_t), intent(in) :: given   !! the pair's friction properties
+      real(dp) :: coefficient
+      logical :: found
+      type(error_t), allocatable :: error
+      call given%take_real('MU', coefficient, found, error, default=0.0_dp)
+      coulomb_by_default = coefficient > 0.0_dp
+   end function coulomb_by_default
+
+   !> Otherwise it is frictionless.
+   logical function frictionless_by_default(given)
+      type(property_list_t), intent(in) :: given
+      frictionless_by_default = .true.
+   end function frictionless_by_default
+
+   !> COULOMB: property MU (required, >= 0; MU = 0 is frictionless).
+   subroutine coulomb_from_properties(properties, law, error)
+      type(property_list_t), intent(in) :: properties
+      class(friction_law_t), allocatable, intent(out) :: law
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: coefficient
+      logical :: found
+      call properties%check_names(spec_names(coulomb_properties()), error)
+      call properties%take_real('MU', coefficient, found, error)
+      if (found .and. .not. (coefficient >= 0.0_dp .and. coefficient < huge(1.0_dp))) &
+         call append_error(error, trim(properties%owner)//': MU must be >= 0, got '//to_string(coefficient))
+      if (.not. allocated(error)) allocate (law, source=new_coulomb_friction(coefficient))
+   end subroutine coulomb_from_properties
+
+   !> FRICTIONLESS: no tangential traction (Coulomb with mu = 0); no properties.
+   subroutine frictionless_from_properties(properties, law, error)
+      type(property_list_t), intent(in) :: properties
+      class(friction_law_t), allocatable, intent(out) :: law
+      type(error_t), allocatable, intent(out) :: error
+      call properties%check_names(spec_names(frictionless_properties()), error)
+      if (.not. allocated(error)) allocate (law, source=new_coulomb_friction(0.0_dp))
+   end subroutine frictionless_from_properties
 
    !> Coulomb return mapping (see the module head) of the branch `branch`.
    pure subroutine return_map(self, trial_traction, pressure, branch, traction, slipping, law_slipping)

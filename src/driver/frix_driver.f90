@@ -25,11 +25,12 @@ module frix_driver
    use frix_newton_solver, only: newton_context_t, newton_report_t, path_constraint_t, setup_newton, &
                                  solve_increment, equation_label
    use frix_results_output, only: results_output_t
+   use frix_results_collection, only: collect_results
+   use frix_increment_results, only: increment_results_t
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
    use frix_support_check, only: check_rigid_body_support
-   use frix_hdf5_results, only: read_restart, read_increment_array
-   use frix_contact_assembly, only: commit_contact, get_contact_history, set_contact_history
+   use frix_state_restart, only: read_state_restart
    use frix_mesh, only: hex8_face_nodes
    use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
@@ -100,8 +101,9 @@ contains
       type(results_output_t) :: output
       integer :: step, first_step, first_increment
 
-      call create_analysis_state(model, state)
-      call setup_newton(model, context, error)
+      call create_analysis_state(model, state, error)
+      if (allocated(error)) return
+      call setup_newton(model, state, context, error)
       if (allocated(error)) return
       call prescribed_displacements(model, 0.0_dp, context%fixed, context%prescribed)
       call check_rigid_body_support(model, context%fixed, error, contact_nodes(model))
@@ -112,10 +114,6 @@ contains
       if (allocated(options%restart_path)) then
          call restart_state(model, options, results_base(options), state, first_step, first_increment, error)
          if (allocated(error)) return
-         if (context%has_contact) then
-            call restart_contact(options, context, error)
-            if (allocated(error)) return
-         end if
       end if
       call output%open(model, results_base(options), error)
       if (allocated(error)) return
@@ -152,28 +150,18 @@ contains
          context%n_continuations
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
-      analyse = context%solver%analyse_seconds
-      factorize = context%solver%factorize_seconds
-      solve = context%solver%solve_seconds
-      factorizations = context%solver%n_factorizations
-      if (allocated(context%fallback)) then
-         analyse = analyse + context%fallback%analyse_seconds
-         factorize = factorize + context%fallback%factorize_seconds
-         solve = solve + context%fallback%solve_seconds
-         factorizations = factorizations + context%fallback%n_factorizations
-      end if
+      analyse = 0.0_dp
+      factorize = 0.0_dp
+      solve = 0.0_dp
+      factorizations = 0
+      call context%solver%add_totals(analyse, factorize, solve, factorizations)
       write (*, '(a,t40,i12)') 'frix: stat factorizations_total', factorizations
       write (*, row) 'frix: stat analyse_seconds', analyse
       write (*, row) 'frix: stat factorize_seconds', factorize
       write (*, row) 'frix: stat solve_seconds', solve
       write (*, row) 'frix: stat total_seconds', total_seconds
       write (*, row) 'frix: stat peak_memory_mb', peak_resident_megabytes()
-      if (allocated(context%fallback)) then
-         write (*, '(a,i0,a)') 'frix: linear solver '//context%solver%name()//' (UMFPACK in ', &
-            context%fallback%n_factorizations, ' factorizations where the matrix was not positive definite)'
-      else
-         write (*, '(a)') 'frix: linear solver '//context%solver%name()
-      end if
+      write (*, '(a)') 'frix: linear solver '//context%solver%description()
    end subroutine print_statistics
 
    !> Peak resident set size of this process (VmHWM of /proc/self/status) in MiB; 0 if unknown.
@@ -207,6 +195,7 @@ contains
       logical, intent(in) :: quiet
       type(error_t), allocatable, intent(out) :: error
       type(newton_report_t) :: report
+      type(increment_results_t) :: results
       real(dp) :: step_end, nominal, size_now, target_time
       integer :: increment, max_iterations, iterations
       real(dp) :: smallest, increment_start, previous_time
@@ -291,8 +280,9 @@ contains
             increment = increment + 1
             target_reached = path_control .and. .not. landing .and. final_increment
             call commit_state(state)
-            if (context%has_contact) call commit_contact(context%contact)
-            call output%write_increment(model, step, increment, state, context, report, error)
+            call collect_results(model, step, increment, state, context, report, results, error)
+            if (allocated(error)) return
+            call output%write_increment(model, results, error)
             if (allocated(error)) return
             if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
                                                        wall_clock_seconds() - increment_start, &
@@ -353,13 +343,13 @@ contains
       iterations = report%iterations
       if (allocated(error) .or. report%converged .or. report%interrupted) return
       if (.not. allocated(model%controls%friction_continuation)) return
-      if (.not. (context%has_contact .and. context%contact%frictional)) return
+      if (.not. (context%has_contact .and. state%contact%frictional)) return
       factors = [model%controls%friction_continuation, 1.0_dp]
       context%n_continuations = context%n_continuations + 1
       call restore_state(state)
       stage_time = time   ! path following: each stage starts from the previous stage's load factor
       do k = 1, size(factors)
-         context%contact%friction_scale = factors(k)
+         state%contact%friction_scale = factors(k)
          write (factor_text, '(f0.3)') factors(k)
          if (.not. context%quiet) write (*, '(2x,a)') 'friction continuation: mu x '//trim(factor_text)
          call solve_increment(model, context, state, stage_time, max_iterations, label, report, error, path)
@@ -372,7 +362,7 @@ contains
          end if
          stage_time = state%time
       end do
-      context%contact%friction_scale = 1.0_dp
+      state%contact%friction_scale = 1.0_dp
    end subroutine attempt_increment
 
    !> The error that ends a run stopped by SIGINT or SIGTERM (the program's main exits with
@@ -409,15 +399,12 @@ contains
                           to_string(size(model%steps)))
          return
       end if
-      time = 0.0_dp
-      call read_restart(options%restart_path, options%restart_step, options%restart_increment, time, &
-                        state%u, state%alpha, state%history, error, model%mesh)
+      call read_state_restart(model, options%restart_path, options%restart_step, options%restart_increment, &
+                              state, time, error)
       if (allocated(error)) then
          error%message = 'frix: restart from '//options%restart_path//': '//error%message
          return
       end if
-      state%time = time
-      call commit_state(state)
       first_step = options%restart_step
       first_increment = options%restart_increment
       if (abs(time - real(first_step, dp)) < 1.0e-12_dp) then
@@ -428,26 +415,6 @@ contains
          ', step '//to_string(options%restart_step)//' increment '//to_string(options%restart_increment)// &
          ' (t = '//time_text(time)//')'
    end subroutine restart_state
-
-   !> The committed slip history of every contact pass, from the restart file.
-   subroutine restart_contact(options, context, error)
-      type(run_options_t), intent(in) :: options
-      type(newton_context_t), intent(inout) :: context
-      type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable :: values(:, :)
-      integer :: p
-      do p = 1, size(context%contact%passes)
-         call get_contact_history(context%contact, p, values)   ! for the shape
-         call read_increment_array(options%restart_path, options%restart_step, options%restart_increment, &
-                                   'contact/pass'//to_string(p)//'_history', values, error)
-         if (allocated(error)) then
-            error%message = 'frix: restart from '//options%restart_path//': contact pass '// &
-                            to_string(p)//': '//error%message
-            return
-         end if
-         call set_contact_history(context%contact, p, values)
-      end do
-   end subroutine restart_contact
 
    !> Whether two paths name the same existing file (compared by their canonical form).
    function same_file(first, second) result(same)

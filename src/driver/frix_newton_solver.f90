@@ -23,14 +23,14 @@ module frix_newton_solver
    use frix_strings, only: to_string
    use frix_finite_check, only: first_non_finite
    use frix_stop_request, only: stop_requested
-   use frix_model, only: model_t, solver_auto, solver_cholmod, solver_umfpack
+   use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
    use frix_sparse_matrix, only: sparse_matrix_t
-   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, solver_not_positive_definite
+   use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
-   use frix_assembler, only: assemble_internal
+   use frix_assembler, only: assemble_internal, internal_tangent_symmetric
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
-   use frix_contact_assembly, only: contact_system_t, setup_contact, search_contact, assemble_contact, &
+   use frix_contact_assembly, only: search_contact, assemble_contact, &
                                     contact_counts, reset_friction_branches, &
                                     release_inconsistent_branches
    implicit none
@@ -53,10 +53,8 @@ module frix_newton_solver
    !> Everything the iterations need that outlives one increment.
    type :: newton_context_t
       type(sparse_matrix_t) :: matrix
-      class(linear_solver_t), allocatable :: solver
-      class(linear_solver_t), allocatable :: fallback  !! UMFPACK when CHOLMOD finds K indefinite
-      logical :: use_fallback = .false.                !! for the rest of the current increment
-      logical :: symmetric = .true.        !! tangent expected symmetric (no follower loads)
+      class(linear_solver_t), allocatable :: solver    !! from the deck's SOLVER (frix_linear_solver_registry)
+      logical :: symmetric = .true.        !! tangent symmetric: materials, loads and contact all say so
       logical, allocatable :: fixed(:)     !! constrained equations
       real(dp), allocatable :: prescribed(:)
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
@@ -69,7 +67,6 @@ module frix_newton_solver
       real(dp), allocatable :: step_window(:)
       logical :: quiet = .false.
       logical :: has_contact = .false.
-      type(contact_system_t) :: contact     !! contact search, slip history, contact assembly
       real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
@@ -100,34 +97,22 @@ module frix_newton_solver
 contains
 
    !> Sparse pattern from the connectivity, the linear solver and work arrays.
-   subroutine setup_newton(model, context, error)
+   subroutine setup_newton(model, state, context, error)
       type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(in) :: state   !! with its contact passes set up
       type(newton_context_t), intent(out) :: context
       type(error_t), allocatable, intent(out) :: error
       integer :: n
       n = 3*model%mesh%n_nodes
       call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
       if (allocated(error)) return
-      context%symmetric = .not. has_follower_loads(model)
-      if (allocated(model%contact_pairs)) context%has_contact = size(model%contact_pairs) > 0
+      context%symmetric = .not. has_follower_loads(model) .and. internal_tangent_symmetric(model)
+      context%has_contact = state%has_contact
+      ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
       if (context%has_contact) then
-         call setup_contact(model, context%contact, error)
-         if (allocated(error)) return
-         ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
-         if (context%contact%unsymmetric) context%symmetric = .false.
+         if (state%contact%unsymmetric) context%symmetric = .false.
       end if
-      select case (model%controls%linear_solver)
-      case (solver_cholmod)
-         call create_linear_solver('CHOLMOD', context%solver, error)
-      case (solver_umfpack)
-         call create_linear_solver('UMFPACK', context%solver, error)
-      case default
-         if (context%symmetric) then
-            call create_linear_solver('CHOLMOD', context%solver, error)
-         else
-            call create_linear_solver('UMFPACK', context%solver, error)
-         end if
-      end select
+      call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
       if (allocated(error)) return
       allocate (context%fixed(n), context%prescribed(n))
       allocate (context%fint(n), context%fext(n), context%residual(n), context%correction(n), &
@@ -161,8 +146,8 @@ contains
       current_time = time
       state%time = time
       if (allocated(context%step_window)) deallocate (context%step_window)
-      context%use_fallback = .false.
-      if (context%has_contact) call reset_friction_branches(context%contact)
+      call context%solver%begin_increment()
+      if (context%has_contact) call reset_friction_branches(state%contact)
       if (present(path)) then
          context%step_window = [path%step_start, path%step_end]
          call prescribed_displacements(model, path%step_end, context%fixed, context%prescribed)
@@ -190,7 +175,7 @@ contains
          report%relative_norms(iteration) = residual_norm/reference
          report%energy_norms(iteration) = energy
          if (context%has_contact) then
-            call contact_counts(context%contact, report%active(iteration), report%slipping(iteration))
+            call contact_counts(state%contact, report%active(iteration), report%slipping(iteration))
          end if
          if (.not. context%quiet) call print_progress(label, current_time, iteration, residual_norm, &
                                                       residual_norm/reference, energy, context%has_contact, &
@@ -207,7 +192,7 @@ contains
                   return
                end if
                ! nodes held in stick after a slip reversal that the law would let slip?
-               n_released = release_inconsistent_branches(context%contact)
+               n_released = release_inconsistent_branches(state%contact)
                if (n_released == 0) then
                   report%converged = .true.
                   return
@@ -386,7 +371,7 @@ contains
       real(dp) :: start
       start = wall_clock_seconds()
       if (context%has_contact) then
-         call search_contact(model, context%contact, state%u, context%matrix, error)
+         call search_contact(model, state%contact, state%u, context%matrix, error)
          if (allocated(error)) return
       end if
       if (with_tangent) then
@@ -402,11 +387,11 @@ contains
       if (allocated(failure)) return
       if (with_tangent) then
          if (context%has_contact) &
-            call assemble_contact(model, context%contact, state%u, context%fint, context%matrix, predictor)
+            call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor)
          call assemble_external(model, time, state%u, context%fext, matrix=context%matrix, &
                                 step_window=context%step_window)
       else
-         if (context%has_contact) call assemble_contact(model, context%contact, state%u, context%fint)
+         if (context%has_contact) call assemble_contact(model, state%contact, state%u, context%fint)
          call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
       if (context%has_contact) call check_finite(model, context%fint, 'contact force', failure)
@@ -564,52 +549,27 @@ contains
       correction_norm = best_fraction*norm2(context%correction)
    end subroutine contact_line_search
 
-   !> Factorize and solve K du = r. When CHOLMOD finds the matrix not positive definite (past
-   !> a limit point, or with large penetrations in the first contact iterations), the
-   !> iteration is repeated with UMFPACK, which stays in use until the end of the increment;
-   !> the next increment tries CHOLMOD again. Both keep their symbolic analyses. Any other
-   !> failure (too large, out of memory, a singular matrix) is reported as it is.
+   !> Factorize and solve K du = r (a CHOLMOD solver falls back to UMFPACK by itself where the
+   !> matrix is not positive definite, frix_auto_solver); a failure names where it broke down.
    subroutine factorize_and_solve(model, context, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(error_t), allocatable, intent(out) :: error
-      if (.not. context%use_fallback) then
-         call context%solver%factorize(context%matrix, error)
-         if (.not. allocated(error)) then
-            call solve_factorized(context, context%residual, context%correction, error)
-            return
-         end if
-         if (context%solver%name() /= 'CHOLMOD' .or. context%solver%failure /= solver_not_positive_definite) then
-            call describe_singularity(model, context%solver%failed_equation, error)
-            return
-         end if
-         deallocate (error)
-         context%use_fallback = .true.
-         if (.not. allocated(context%fallback)) then
-            call create_linear_solver('UMFPACK', context%fallback, error)
-            if (allocated(error)) return
-         end if
-      end if
-      call context%fallback%factorize(context%matrix, error)
+      call context%solver%factorize(context%matrix, error)
       if (allocated(error)) then
-         call describe_singularity(model, context%fallback%failed_equation, error)
+         call describe_singularity(model, context%solver%failed_equation, error)
          return
       end if
       call solve_factorized(context, context%residual, context%correction, error)
    end subroutine factorize_and_solve
 
-   !> x = K^-1 rhs with the factorization of this iteration (CHOLMOD's, or UMFPACK's after a
-   !> fallback).
+   !> x = K^-1 rhs with the factorization of this iteration.
    subroutine solve_factorized(context, rhs, x, error)
       type(newton_context_t), intent(inout) :: context
       real(dp), intent(in) :: rhs(:)
       real(dp), intent(out) :: x(:)
       type(error_t), allocatable, intent(out) :: error
-      if (context%use_fallback) then
-         call context%fallback%solve(context%matrix, rhs, x, error)
-      else
-         call context%solver%solve(context%matrix, rhs, x, error)
-      end if
+      call context%solver%solve(context%matrix, rhs, x, error)
    end subroutine solve_factorized
 
    !> Name the node and direction where the factorization broke down.

@@ -1,72 +1,136 @@
-!> The element registry: turns the shape keyword of a deck's element line (and the EAS count
-!> and kinematics given with it) into an element formulation object.
+!> The element registry: a table of (shape keyword, constructor) entries. For each shape of an
+!> element line it answers how many nodes the shape has and which option keywords it takes,
+!> and it turns the keyword, the options (a property list) and the kinematics into an element
+!> formulation object; the deck reader names no element type. Each shape's file reads and
+!> validates its own options.
 !>
-!> Shapes (case-insensitive):
-!>   HEX8      8-node hexahedron; n_eas from the caller: 0 (plain), 3, 9, 21 or 30.
-!>   HEXA8-E3  the seed's name of "a hybrid-mixed EAS element Hexa8-E3": HEX8 with EAS3. An
-!>             n_eas of 0 (not given) or 3 is accepted; any other value is a conflict.
+!> Shapes (case-insensitive; frix_hex8_options):
+!>   HEX8      8-node hexahedron, option EAS 0 (default), 3, 9, 21 or 30
+!>   HEXA8-E3  the seed's name of HEX8 with EAS 3
 module frix_element_registry
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string, to_upper
+   use frix_strings, only: to_string
+   use frix_property_list, only: property_list_t, property_spec_t, keyword_index, joined
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
-   use frix_eas_modes, only: eas_mode_counts, is_valid_eas_count
-   use frix_hex8, only: new_hex8
+   use frix_hex8_options, only: hex8_options, hex8_from_options, hexa8_e3_from_options
    implicit none
    private
 
-   public :: create_element, element_shape_names
+   public :: element_shape_t, create_element, find_element_shape, element_shape_choices, &
+             element_shape_example, max_element_nodes
 
-   !> Shape keywords understood by `create_element`, as listed in error messages.
-   character(len=*), parameter :: element_shape_names = 'HEX8, HEXA8-E3'
+   integer, parameter :: keyword_length = 16
+
+   abstract interface
+      !> A shape's constructor from its options (owner: the shape keyword).
+      subroutine element_constructor(options, kinematics, element, error)
+         import :: property_list_t, element_t, error_t
+         type(property_list_t), intent(in) :: options
+         integer, intent(in) :: kinematics
+         class(element_t), allocatable, intent(out) :: element
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine element_constructor
+
+      !> The option keywords a shape takes.
+      function option_specs() result(specs)
+         import :: property_spec_t
+         type(property_spec_t), allocatable :: specs(:)
+      end function option_specs
+   end interface
+
+   type :: element_entry_t
+      character(len=keyword_length) :: keyword   !! upper case, as printed
+      character(len=keyword_length) :: family    !! named in node-count messages
+      integer :: n_nodes
+      procedure(element_constructor), pointer, nopass :: create => null()
+      procedure(option_specs), pointer, nopass :: options => null()
+   end type element_entry_t
+
+   !> What a deck reader needs to know of a shape.
+   type :: element_shape_t
+      character(len=keyword_length) :: keyword = ''
+      character(len=keyword_length) :: family = ''
+      integer :: n_nodes = 0
+      type(property_spec_t), allocatable :: options(:)
+   end type element_shape_t
 
 contains
 
-   !> Element formulation for `shape_keyword` with `n_eas` enhanced parameters and
-   !> `kinematics` (kinematics_linear or kinematics_total_lagrangian).
-   subroutine create_element(shape_keyword, n_eas, kinematics, element, error)
-      character(len=*), intent(in) :: shape_keyword  !! e.g. 'HEX8', 'hexa8-e3'
-      integer, intent(in) :: n_eas                   !! enhanced parameters requested (0 = none given)
-      integer, intent(in) :: kinematics              !! kinematics_linear or kinematics_total_lagrangian
+   !> The registered shapes: one line per shape.
+   function element_table() result(table)
+      type(element_entry_t), allocatable :: table(:)
+      table = [element_entry_t('HEX8', 'HEX8', 8, hex8_from_options, hex8_options), &
+               element_entry_t('HEXA8-E3', 'HEX8', 8, hexa8_e3_from_options, hex8_options)]
+   end function element_table
+
+   !> The shape of `keyword` (any case); `found` false if no shape has it.
+   subroutine find_element_shape(keyword, shape, found)
+      character(len=*), intent(in) :: keyword
+      type(element_shape_t), intent(out) :: shape
+      logical, intent(out) :: found
+      type(element_entry_t), allocatable :: table(:)
+      integer :: i
+      table = element_table()
+      i = keyword_index(table%keyword, keyword)
+      found = i > 0
+      if (.not. found) return
+      shape%keyword = table(i)%keyword
+      shape%family = table(i)%family
+      shape%n_nodes = table(i)%n_nodes
+      shape%options = table(i)%options()
+   end subroutine find_element_shape
+
+   !> "HEX8 or HEXA8-E3": the shapes as a deck message lists them.
+   function element_shape_choices() result(text)
+      character(len=:), allocatable :: text
+      type(element_entry_t), allocatable :: table(:)
+      integer :: n
+      table = element_table()
+      n = size(table)
+      text = trim(table(n)%keyword)
+      if (n > 1) text = joined(table(1:n - 1)%keyword)//' or '//text
+   end function element_shape_choices
+
+   !> The first shape, as an example in messages.
+   function element_shape_example() result(text)
+      character(len=:), allocatable :: text
+      type(element_entry_t), allocatable :: table(:)
+      table = element_table()
+      text = trim(table(1)%keyword)
+   end function element_shape_example
+
+   !> The most nodes of any shape.
+   integer function max_element_nodes()
+      type(element_entry_t), allocatable :: table(:)
+      table = element_table()
+      max_element_nodes = maxval(table%n_nodes)
+   end function max_element_nodes
+
+   !> Element formulation for `shape_keyword` with `options` and `kinematics`
+   !> (kinematics_linear or kinematics_total_lagrangian).
+   subroutine create_element(shape_keyword, options, kinematics, element, error)
+      character(len=*), intent(in) :: shape_keyword   !! e.g. 'HEX8', 'hexa8-e3'
+      type(property_list_t), intent(in) :: options    !! e.g. EAS 9
+      integer, intent(in) :: kinematics
       class(element_t), allocatable, intent(out) :: element
       type(error_t), allocatable, intent(out) :: error
-      integer :: n_used
-
+      type(element_entry_t), allocatable :: table(:)
+      type(property_list_t) :: named
+      integer :: i
       if (kinematics /= kinematics_linear .and. kinematics /= kinematics_total_lagrangian) then
          call fatal_error(error, 'unknown kinematics code '//to_string(kinematics)// &
                           ' for element shape '//trim(shape_keyword))
          return
       end if
-
-      select case (to_upper(trim(adjustl(shape_keyword))))
-      case ('HEX8')
-         if (.not. is_valid_eas_count(n_eas)) then
-            call fatal_error(error, 'element shape HEX8: unsupported number of EAS parameters '// &
-                             to_string(n_eas)//' (valid: '//valid_counts()//')')
-            return
-         end if
-         n_used = n_eas
-      case ('HEXA8-E3')
-         if (n_eas /= 0 .and. n_eas /= 3) then
-            call fatal_error(error, 'element shape HEXA8-E3 is HEX8 with 3 EAS parameters; '// &
-                             'it conflicts with the EAS count '//to_string(n_eas)//' given')
-            return
-         end if
-         n_used = 3
-      case default
+      table = element_table()
+      i = keyword_index(table%keyword, shape_keyword)
+      if (i == 0) then
          call fatal_error(error, 'unknown element shape "'//trim(shape_keyword)// &
-                          '" (valid: '//element_shape_names//')')
+                          '" (valid: '//joined(table%keyword)//')')
          return
-      end select
-      allocate (element, source=new_hex8(n_used, kinematics))
+      end if
+      named = options
+      named%owner = table(i)%keyword
+      call table(i)%create(named, kinematics, element, error)
    end subroutine create_element
-
-   !> "0, 3, 9, 21, 30"
-   pure function valid_counts() result(text)
-      character(len=:), allocatable :: text
-      integer :: i
-      text = to_string(eas_mode_counts(1))
-      do i = 2, size(eas_mode_counts)
-         text = text//', '//to_string(eas_mode_counts(i))
-      end do
-   end function valid_counts
 end module frix_element_registry

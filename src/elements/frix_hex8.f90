@@ -15,7 +15,9 @@
 !>   Green-Lagrange enhancement Buechter, Ramm & Roehl 1994, Simo & Armero 1992). alpha is
 !>   solved locally so that h = sum_g G^T S dV_g = 0; the returned tangent is the statically
 !>   condensed K_uu - K_ua K_aa^{-1} K_au, i.e. exactly d fint/du with alpha = alpha(u).
-!>   The condensation assumes a symmetric material tangent (hyperelastic or associative laws).
+!> A material whose tangent is symmetric (material_t%symmetric_tangent) gets the upper block
+!>   triangle computed and mirrored, and K_au = K_ua^T; for an unsymmetric one (non-associated
+!>   flow) every block and K_au = sum_g G^T C B dV are computed.
 module frix_hex8
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -152,7 +154,7 @@ contains
       real(dp) :: compatible(6, 8), total(6, 8), pk2(6, 8), moduli(6, 6, 8)
       real(dp) :: enhanced(6, max_eas_modes, 8)
       integer :: n, g, bad_point
-      logical :: total_lagrangian
+      logical :: total_lagrangian, symmetric
 
       n = self%n_eas
       total_lagrangian = self%kinematics == kinematics_total_lagrangian
@@ -200,13 +202,14 @@ contains
 
       call internal_force(dn_dx, volume, deformation, pk2, fint)
       if (present(tangent)) then
+         symmetric = material%symmetric_tangent()
          if (total_lagrangian) then
-            call tangent_total_lagrangian(dn_dx, volume, deformation, pk2, moduli, tangent)
+            call tangent_total_lagrangian(dn_dx, volume, deformation, pk2, moduli, symmetric, tangent)
          else
-            call tangent_linear(dn_dx, volume, moduli, tangent)
+            call tangent_linear(dn_dx, volume, moduli, symmetric, tangent)
          end if
          if (n > 0) then
-            call condense(self%name, n, dn_dx, volume, deformation, moduli, enhanced, tangent, error)
+            call condense(self%name, n, dn_dx, volume, deformation, moduli, enhanced, symmetric, tangent, error)
             if (allocated(error)) return
          end if
       end if
@@ -411,10 +414,11 @@ contains
       end do
    end subroutine internal_force
 
-   !> K = sum_g B^T C B dV with the sparse nodal blocks of the linear B (only the upper block
-   !> triangle a <= b is computed, then mirrored; C is taken symmetric).
-   pure subroutine tangent_linear(dn_dx, volume, moduli, tangent)
+   !> K = sum_g B^T C B dV with the sparse nodal blocks of the linear B (for a symmetric C
+   !> only the upper block triangle a <= b is computed, then mirrored).
+   pure subroutine tangent_linear(dn_dx, volume, moduli, symmetric, tangent)
       real(dp), intent(in) :: dn_dx(3, 8, 8), volume(8), moduli(6, 6, 8)
+      logical, intent(in) :: symmetric
       real(dp), intent(out) :: tangent(:, :)
       real(dp) :: weighted(6, 6), c_b(6, 3, 8), block(3, 3)
       integer :: g, a, b, i, j
@@ -430,7 +434,7 @@ contains
             end do
          end do
          do b = 1, 8
-            do a = 1, b
+            do a = 1, merge(b, 8, symmetric)
                do j = 1, 3
                   do i = 1, 3
                      block(i, j) = dn_dx(b_derivative(1, i), a, g)*c_b(b_row(1, i), j, b) &
@@ -442,13 +446,15 @@ contains
             end do
          end do
       end do
-      call mirror_upper_blocks(tangent)
+      if (symmetric) call mirror_upper_blocks(tangent)
    end subroutine tangent_linear
 
-   !> K = sum_g (B_NL^T C B_NL + (Grad N_a . S . Grad N_b) I) dV0, upper blocks then mirrored.
-   pure subroutine tangent_total_lagrangian(dn_dx, volume, deformation, pk2, moduli, tangent)
+   !> K = sum_g (B_NL^T C B_NL + (Grad N_a . S . Grad N_b) I) dV0 (for a symmetric C the
+   !> upper blocks, then mirrored).
+   pure subroutine tangent_total_lagrangian(dn_dx, volume, deformation, pk2, moduli, symmetric, tangent)
       real(dp), intent(in) :: dn_dx(3, 8, 8), volume(8), deformation(3, 3, 8), pk2(6, 8)
       real(dp), intent(in) :: moduli(6, 6, 8)
+      logical, intent(in) :: symmetric
       real(dp), intent(out) :: tangent(:, :)
       real(dp) :: b_nl(6, 3, 8), c_b(6, 3), s_tensor(3, 3), geometric
       integer :: g, a, b, i
@@ -458,7 +464,7 @@ contains
          s_tensor = volume(g)*tensor_from_voigt(pk2(:, g))
          do b = 1, 8
             c_b = volume(g)*matmul(moduli(:, :, g), b_nl(:, :, b))
-            do a = 1, b
+            do a = 1, merge(b, 8, symmetric)
                geometric = dot_product(dn_dx(:, a, g), matmul(s_tensor, dn_dx(:, b, g)))
                tangent(3*a - 2:3*a, 3*b - 2:3*b) = tangent(3*a - 2:3*a, 3*b - 2:3*b) &
                                                    + matmul(transpose(b_nl(:, :, a)), c_b)
@@ -468,7 +474,7 @@ contains
             end do
          end do
       end do
-      call mirror_upper_blocks(tangent)
+      if (symmetric) call mirror_upper_blocks(tangent)
    end subroutine tangent_total_lagrangian
 
    !> Nodal blocks of dE/du (Voigt, engineering shears): column i of node a holds
@@ -490,13 +496,15 @@ contains
       end do
    end subroutine nonlinear_b
 
-   !> Static condensation K <- K - K_ua K_aa^{-1} K_au with K_ua = sum_g B^T C G dV and
-   !> K_aa = sum_g G^T C G dV at the converged alpha (C symmetric, so K_au = K_ua^T).
-   subroutine condense(name, n, dn_dx, volume, deformation, moduli, enhanced, tangent, error)
+   !> Static condensation K <- K - K_ua K_aa^{-1} K_au with K_ua = sum_g B^T C G dV,
+   !> K_au = sum_g G^T C B dV and K_aa = sum_g G^T C G dV at the converged alpha (for a
+   !> symmetric C, K_au = K_ua^T).
+   subroutine condense(name, n, dn_dx, volume, deformation, moduli, enhanced, symmetric, tangent, error)
       character(len=*), intent(in) :: name
       integer, intent(in) :: n
       real(dp), intent(in) :: dn_dx(3, 8, 8), volume(8), deformation(3, 3, 8), moduli(6, 6, 8)
       real(dp), intent(in) :: enhanced(:, :, :)
+      logical, intent(in) :: symmetric
       real(dp), intent(inout) :: tangent(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: coupling(24, max_eas_modes), solved(max_eas_modes, 24)
@@ -504,6 +512,7 @@ contains
       integer :: g, a
       logical :: singular
       coupling(:, 1:n) = 0.0_dp
+      solved(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
       stiffness(1:n, 1:n) = 0.0_dp
       do g = 1, 8
          call nonlinear_b(deformation(:, :, g), dn_dx(:, :, g), b_nl)
@@ -512,9 +521,12 @@ contains
          do a = 1, 8
             coupling(3*a - 2:3*a, 1:n) = coupling(3*a - 2:3*a, 1:n) + &
                                          matmul(transpose(b_nl(:, :, a)), weighted(:, 1:n))
+            if (.not. symmetric) solved(1:n, 3*a - 2:3*a) = solved(1:n, 3*a - 2:3*a) + &
+                                 volume(g)*matmul(transpose(enhanced(:, 1:n, g)), &
+                                                  matmul(moduli(:, :, g), b_nl(:, :, a)))
          end do
       end do
-      solved(1:n, :) = transpose(coupling(:, 1:n))
+      if (symmetric) solved(1:n, :) = transpose(coupling(:, 1:n))
       call solve_in_place(stiffness(1:n, 1:n), solved(1:n, :), singular)
       if (singular) then
          call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')

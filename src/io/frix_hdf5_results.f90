@@ -57,11 +57,13 @@ module frix_hdf5_results
       integer :: n_elements = 0
       integer :: n_increments = 0                 !! increment groups written so far
       type(named_array_t), allocatable :: contact(:)
+      type(named_array_t), allocatable :: fields(:)   !! named integration-point fields
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
       procedure :: close => results_close
       procedure :: n_written => results_n_written
+      procedure :: add_point_field
       procedure, private :: add_contact_real_1, add_contact_real_2, add_contact_integer_1
       generic :: add_contact_array => add_contact_real_1, add_contact_real_2, add_contact_integer_1
    end type hdf5_results_t
@@ -104,7 +106,8 @@ contains
       self%n_elements = mesh%n_elements
       self%n_increments = 0
       if (allocated(self%contact)) deallocate (self%contact)
-      allocate (self%contact(0))
+      if (allocated(self%fields)) deallocate (self%fields)
+      allocate (self%contact(0), self%fields(0))
 
       call write_header(self%file, mesh, title, deck_path, version, error)
       if (.not. allocated(error)) call flush_file(self%file, error)
@@ -251,12 +254,47 @@ contains
       call append_contact(self, item)
    end subroutine add_contact_integer_1
 
+   !> Add a named scalar per integration point, values(n_points, n_elements) (a material's
+   !> history variable such as an equivalent plastic strain), to the `fields` group of the next
+   !> increment; h5py shape (n_elements, n_points).
+   subroutine add_point_field(self, name, values)
+      class(hdf5_results_t), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      type(named_array_t) :: item
+      item%name = name
+      item%reals = values
+      call append_item(self%fields, item)
+   end subroutine add_point_field
+
    subroutine append_contact(self, item)
       type(hdf5_results_t), intent(inout) :: self
-      type(named_array_t), intent(in) :: item
-      if (.not. allocated(self%contact)) allocate (self%contact(0))
-      self%contact = [self%contact, item]
+      type(named_array_t), intent(inout) :: item
+      call append_item(self%contact, item)
    end subroutine append_contact
+
+   !> items = [items, item], moving item's arrays (an array constructor of this type would
+   !> leak their copies with gfortran 12).
+   subroutine append_item(items, item)
+      type(named_array_t), allocatable, intent(inout) :: items(:)
+      type(named_array_t), intent(inout) :: item
+      type(named_array_t), allocatable :: grown(:)
+      integer :: i, n
+      if (.not. allocated(items)) allocate (items(0))
+      n = size(items)
+      allocate (grown(n + 1))
+      do i = 1, n
+         call move_alloc(items(i)%name, grown(i)%name)
+         if (allocated(items(i)%reals)) call move_alloc(items(i)%reals, grown(i)%reals)
+         if (allocated(items(i)%integers)) call move_alloc(items(i)%integers, grown(i)%integers)
+         grown(i)%rank_one = items(i)%rank_one
+      end do
+      call move_alloc(item%name, grown(n + 1)%name)
+      if (allocated(item%reals)) call move_alloc(item%reals, grown(n + 1)%reals)
+      if (allocated(item%integers)) call move_alloc(item%integers, grown(n + 1)%integers)
+      grown(n + 1)%rank_one = item%rank_one
+      call move_alloc(grown, items)
+   end subroutine append_item
 
    !> Write one converged increment as group /increments/<NNNNNN> and flush the file. The
    !> contact arrays added since the previous increment are written with it and then dropped.
@@ -292,8 +330,8 @@ contains
       call close_group_after(increments, error)
       if (allocated(error)) return
       self%n_increments = self%n_increments + 1
-      deallocate (self%contact)
-      allocate (self%contact(0))
+      deallocate (self%contact, self%fields)
+      allocate (self%contact(0), self%fields(0))
       call flush_file(self%file, error)
    end subroutine results_write_increment
 
@@ -316,6 +354,15 @@ contains
          call check_object_name(self%contact(i)%name, 'contact array', error)
          if (allocated(error)) return
       end do
+      do i = 1, size(self%fields)
+         call check_object_name(self%fields(i)%name, 'field', error)
+         if (allocated(error)) return
+         if (size(self%fields(i)%reals, 2) /= self%n_elements) then
+            call fatal_error(error, 'HDF5 output: field "'//self%fields(i)%name//'" must have '// &
+                             to_string(self%n_elements)//' elements in its last dimension')
+            return
+         end if
+      end do
    end subroutine check_increment_shapes
 
    subroutine write_increment_group(self, group, step, increment, time, displacement, reaction, stress, strain, &
@@ -327,8 +374,6 @@ contains
       real(dp), intent(in) :: displacement(:, :), reaction(:, :), stress(:, :, :), strain(:, :, :)
       real(dp), intent(in) :: alpha(:, :), history(:, :, :)
       type(error_t), allocatable, intent(out) :: error
-      type(hdf5_location_t) :: contact
-      integer :: i
 
       call write_attribute(group, 'step', step, error)
       if (allocated(error)) return
@@ -349,29 +394,41 @@ contains
       call write_dataset(group, 'history', history, error)
       if (allocated(error)) return
 
-      if (size(self%contact) > 0) then
-         call create_group(group, 'contact', contact, error)
-         if (allocated(error)) return
-         do i = 1, size(self%contact)
-            associate (item => self%contact(i))
-               if (allocated(item%reals)) then
-                  if (item%rank_one) then
-                     call write_dataset(contact, item%name, item%reals(1, :), error)
-                  else
-                     call write_dataset(contact, item%name, item%reals, error)
-                  end if
-               else
-                  call write_dataset(contact, item%name, item%integers(1, :), error)
-               end if
-            end associate
-            if (allocated(error)) exit
-         end do
-         call close_group_after(contact, error)
-         if (allocated(error)) return
-      end if
+      call write_named_arrays(group, 'contact', self%contact, error)
+      if (allocated(error)) return
+      call write_named_arrays(group, 'fields', self%fields, error)
+      if (allocated(error)) return
       ! written last: readers ignore a group without it (a run stopped while writing it)
       call write_attribute(group, 'complete', 1, error)
    end subroutine write_increment_group
+
+   !> The group `name` of an increment holding `items` (none: no group).
+   subroutine write_named_arrays(increment, name, items, error)
+      type(hdf5_location_t), intent(in) :: increment
+      character(len=*), intent(in) :: name
+      type(named_array_t), intent(in) :: items(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(hdf5_location_t) :: group
+      integer :: i
+      if (size(items) == 0) return
+      call create_group(increment, name, group, error)
+      if (allocated(error)) return
+      do i = 1, size(items)
+         associate (item => items(i))
+            if (allocated(item%reals)) then
+               if (item%rank_one) then
+                  call write_dataset(group, item%name, item%reals(1, :), error)
+               else
+                  call write_dataset(group, item%name, item%reals, error)
+               end if
+            else
+               call write_dataset(group, item%name, item%integers(1, :), error)
+            end if
+         end associate
+         if (allocated(error)) exit
+      end do
+      call close_group_after(group, error)
+   end subroutine write_named_arrays
 
    !> Close the file (no-op if it is not open).
    subroutine results_close(self, error)

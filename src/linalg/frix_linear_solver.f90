@@ -53,6 +53,12 @@ module frix_linear_solver
       procedure(factorize_interface), deferred :: factorize
       procedure(solve_interface), deferred :: solve
       procedure(release_interface), deferred :: release
+      !> Called by the Newton loop at the start of every load increment; no-op by default.
+      procedure :: begin_increment
+      !> What the run's statistics print after "linear solver": the name by default.
+      procedure :: description
+      !> Adds the solver's (and any inner solver's) accumulated seconds and factorizations.
+      procedure :: add_totals
    end type linear_solver_t
 
    abstract interface
@@ -91,6 +97,26 @@ module frix_linear_solver
    end interface
 
 contains
+
+   subroutine begin_increment(solver)
+      class(linear_solver_t), intent(inout) :: solver
+   end subroutine begin_increment
+
+   function description(solver) result(text)
+      class(linear_solver_t), intent(in) :: solver
+      character(len=:), allocatable :: text
+      text = solver%name()
+   end function description
+
+   subroutine add_totals(solver, analyse, factorize, solve, factorizations)
+      class(linear_solver_t), intent(in) :: solver
+      real(dp), intent(inout) :: analyse, factorize, solve   !! seconds
+      integer, intent(inout) :: factorizations
+      analyse = analyse + solver%analyse_seconds
+      factorize = factorize + solver%factorize_seconds
+      solve = solve + solver%solve_seconds
+      factorizations = factorizations + solver%n_factorizations
+   end subroutine add_totals
 
    !> Wall clock time in seconds from an arbitrary origin (system_clock, 64-bit counter).
    function wall_clock_seconds() result(seconds)

@@ -1,34 +1,105 @@
-!> Turns a deck keyword into a linear solver object. The default-by-symmetry choice
-!> (CHOLMOD for symmetric positive definite tangents, UMFPACK otherwise) is the caller's.
+!> The linear solver registry: a table of (deck keyword, constructor) entries. The deck's
+!> SOLVER keyword (Auto, Cholmod, Umfpack) becomes a solver object; the Newton loop then only
+!> calls linear_solver_t's procedures.
+!>
+!> For a Newton system (`symmetric` given: whether its tangent is expected symmetric):
+!>   AUTO     CHOLMOD guarded by UMFPACK (frix_auto_solver) if symmetric, else UMFPACK
+!>   CHOLMOD  CHOLMOD guarded by UMFPACK (frix_auto_solver)
+!>   UMFPACK  UMFPACK
+!> Without `symmetric`, CHOLMOD and UMFPACK are the bare library solvers, and AUTO the guarded
+!> CHOLMOD.
 module frix_linear_solver_registry
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_upper
+   use frix_property_list, only: keyword_index
    use frix_linear_solver, only: linear_solver_t
    use frix_cholmod_solver, only: cholmod_solver_t
    use frix_umfpack_solver, only: umfpack_solver_t
+   use frix_auto_solver, only: auto_solver_t
    implicit none
    private
 
-   public :: create_linear_solver, linear_solver_keywords
+   public :: create_linear_solver, is_linear_solver_keyword, linear_solver_keywords, linear_solver_choices
 
-   !> The valid keywords, for messages and deck documentation.
+   !> The keywords of the bare library solvers, for messages.
    character(len=*), parameter :: linear_solver_keywords = 'CHOLMOD, UMFPACK'
+   !> The deck's choices, as its messages name them.
+   character(len=*), parameter :: linear_solver_choices = 'Auto, Cholmod or Umfpack'
+
+   abstract interface
+      !> A solver for a Newton system (`newton`) whose tangent is expected `symmetric`.
+      subroutine solver_constructor(newton, symmetric, solver)
+         import :: linear_solver_t
+         logical, intent(in) :: newton, symmetric
+         class(linear_solver_t), allocatable, intent(out) :: solver
+      end subroutine solver_constructor
+   end interface
+
+   type :: solver_entry_t
+      character(len=8) :: keyword
+      procedure(solver_constructor), pointer, nopass :: create => null()
+   end type solver_entry_t
 
 contains
 
-   !> Allocate the solver named by `keyword` (case-insensitive, surrounding blanks ignored).
-   subroutine create_linear_solver(keyword, solver, error)
+   !> The registered solvers: one line per solver.
+   function solver_table() result(table)
+      type(solver_entry_t), allocatable :: table(:)
+      table = [solver_entry_t('AUTO', new_auto), solver_entry_t('CHOLMOD', new_cholmod), &
+               solver_entry_t('UMFPACK', new_umfpack)]
+   end function solver_table
+
+   !> Whether `keyword` (any case) names a registered solver.
+   logical function is_linear_solver_keyword(keyword)
+      character(len=*), intent(in) :: keyword
+      type(solver_entry_t), allocatable :: table(:)
+      table = solver_table()
+      is_linear_solver_keyword = keyword_index(table%keyword, keyword) > 0
+   end function is_linear_solver_keyword
+
+   !> Allocate the solver named by `keyword` (case-insensitive, surrounding blanks ignored);
+   !> `symmetric` given: for a Newton system (see the module head).
+   subroutine create_linear_solver(keyword, solver, error, symmetric)
       character(len=*), intent(in) :: keyword
       class(linear_solver_t), allocatable, intent(out) :: solver
       type(error_t), allocatable, intent(out) :: error
-      select case (to_upper(trim(adjustl(keyword))))
-      case ('CHOLMOD')
-         allocate (cholmod_solver_t :: solver)
-      case ('UMFPACK')
-         allocate (umfpack_solver_t :: solver)
-      case default
+      logical, intent(in), optional :: symmetric
+      type(solver_entry_t), allocatable :: table(:)
+      integer :: i
+      table = solver_table()
+      i = keyword_index(table%keyword, keyword)
+      if (i > 0 .and. present(symmetric)) then
+         call table(i)%create(.true., symmetric, solver)
+      else if (i > 0) then
+         call table(i)%create(.false., .true., solver)
+      else
          call fatal_error(error, 'unknown linear solver "'//trim(adjustl(keyword))//'"; valid: '// &
-                          linear_solver_keywords)
-      end select
+                       linear_solver_keywords)
+      end if
    end subroutine create_linear_solver
+
+   subroutine new_auto(newton, symmetric, solver)
+      logical, intent(in) :: newton, symmetric
+      class(linear_solver_t), allocatable, intent(out) :: solver
+      if (symmetric) then
+         allocate (auto_solver_t :: solver)
+      else
+         allocate (umfpack_solver_t :: solver)
+      end if
+   end subroutine new_auto
+
+   subroutine new_cholmod(newton, symmetric, solver)
+      logical, intent(in) :: newton, symmetric
+      class(linear_solver_t), allocatable, intent(out) :: solver
+      if (newton) then
+         allocate (auto_solver_t :: solver)
+      else
+         allocate (cholmod_solver_t :: solver)
+      end if
+   end subroutine new_cholmod
+
+   subroutine new_umfpack(newton, symmetric, solver)
+      logical, intent(in) :: newton, symmetric
+      class(linear_solver_t), allocatable, intent(out) :: solver
+      allocate (umfpack_solver_t :: solver)
+   end subroutine new_umfpack
 end module frix_linear_solver_registry

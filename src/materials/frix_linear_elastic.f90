@@ -7,12 +7,15 @@
 !> Units: stresses and moduli in the user's consistent stress unit; strains dimensionless.
 module frix_linear_elastic
    use frix_kinds, only: dp
-   use frix_error, only: error_t
+   use frix_error, only: error_t, append_error
+   use frix_strings, only: to_string
+   use frix_property_list, only: property_list_t
    use frix_material, only: material_t
    implicit none
    private
 
    public :: linear_elastic_t, new_linear_elastic, lame_parameters, hooke_tangent
+   public :: linear_elastic_from_properties, elastic_constants
 
    !> Hooke's law; no history. Valid for 0 < young and -1 < poisson < 0.5 (the registry
    !> checks this before constructing).
@@ -38,6 +41,37 @@ contains
       material%poisson = poisson
       material%density = density
    end function new_linear_elastic
+
+   !> The Hooke material of deck properties YOUNG, NUE, DENS (elastic_constants).
+   subroutine linear_elastic_from_properties(properties, material, error)
+      type(property_list_t), intent(in) :: properties
+      class(material_t), allocatable, intent(out) :: material
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: young, poisson, density
+      call elastic_constants(properties, young, poisson, density, error)
+      if (.not. allocated(error)) allocate (material, source=new_linear_elastic(young, poisson, density))
+   end subroutine linear_elastic_from_properties
+
+   !> The properties of every elastic law: YOUNG (required, > 0), NUE (required,
+   !> -1 < NUE < 0.5), DENS (optional, >= 0, default 0; mass per unit reference volume).
+   subroutine elastic_constants(properties, young, poisson, density, error)
+      type(property_list_t), intent(in) :: properties
+      real(dp), intent(out) :: young, poisson, density
+      type(error_t), allocatable, intent(inout) :: error
+      logical :: has_young, has_poisson, has_density
+      character(len=:), allocatable :: law
+      law = trim(properties%owner)
+      call properties%check_names([character(len=8) :: 'YOUNG', 'NUE', 'DENS'], error)
+      call properties%take_real('YOUNG', young, has_young, error)
+      call properties%take_real('NUE', poisson, has_poisson, error)
+      call properties%take_real('DENS', density, has_density, error, default=0.0_dp)
+      if (has_young .and. .not. (young > 0.0_dp)) &
+         call append_error(error, law//': YOUNG must be > 0, got '//to_string(young))
+      if (has_poisson .and. .not. (poisson > -1.0_dp .and. poisson < 0.5_dp)) &
+         call append_error(error, law//': NUE must lie in (-1, 0.5), got '//to_string(poisson))
+      if (has_density .and. .not. (density >= 0.0_dp)) &
+         call append_error(error, law//': DENS must be >= 0, got '//to_string(density))
+   end subroutine elastic_constants
 
    !> Lame parameters lambda and mu (shear modulus) from E and nu.
    pure subroutine lame_parameters(young, poisson, lambda, mu)

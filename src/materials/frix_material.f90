@@ -26,7 +26,11 @@ module frix_material
       procedure(response_interface), deferred :: response
       !> Small-strain elastic modulus tensor (for initial stiffness and error estimates).
       procedure(elastic_tangent_interface), deferred :: elastic_tangent
+      procedure :: history_names
+      procedure :: symmetric_tangent
    end type material_t
+
+   integer, parameter, public :: history_name_length = 16
 
    !> Holder so that materials of different classes can live in one array.
    type :: material_slot_t
@@ -57,4 +61,25 @@ module frix_material
          real(dp), intent(out) :: tangent(6, 6)
       end subroutine elastic_tangent_interface
    end interface
+
+contains
+
+   !> Names of the history variables that the result files show per integration point:
+   !> names(k) labels entry k of the state vector (e.g. 'EQPS'); entries beyond size(names)
+   !> are internal (restart data only). A law with history variables to show overrides this;
+   !> the default shows none.
+   pure subroutine history_names(self, names)
+      class(material_t), intent(in) :: self
+      character(len=history_name_length), allocatable, intent(out) :: names(:)
+      allocate (names(0))
+   end subroutine history_names
+
+   !> Whether the law's consistent tangent d stress / d strain is symmetric (hyperelastic and
+   !> associated laws); a law with an unsymmetric tangent (non-associated flow) overrides this,
+   !> and the elements then assemble the full element tangent and the solver an unsymmetric
+   !> system. Default: symmetric.
+   pure logical function symmetric_tangent(self)
+      class(material_t), intent(in) :: self
+      symmetric_tangent = .true.
+   end function symmetric_tangent
 end module frix_material

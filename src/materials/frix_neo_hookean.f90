@@ -20,11 +20,12 @@ module frix_neo_hookean
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_material, only: material_t
-   use frix_linear_elastic, only: lame_parameters, hooke_tangent
+   use frix_property_list, only: property_list_t
+   use frix_linear_elastic, only: lame_parameters, hooke_tangent, elastic_constants
    implicit none
    private
 
-   public :: neo_hookean_t, new_neo_hookean
+   public :: neo_hookean_t, new_neo_hookean, neo_hookean_from_properties
 
    !> Row i and column j of the symmetric 3 x 3 tensor behind Voigt index 1..6.
    integer, parameter :: voigt_row(6) = [1, 2, 3, 1, 1, 2]
@@ -56,6 +57,16 @@ contains
       material%density = density
       call lame_parameters(young, poisson, material%lambda, material%mu)
    end function new_neo_hookean
+
+   !> The material of deck properties YOUNG, NUE, DENS (frix_linear_elastic's elastic_constants).
+   subroutine neo_hookean_from_properties(properties, material, error)
+      type(property_list_t), intent(in) :: properties
+      class(material_t), allocatable, intent(out) :: material
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: young, poisson, density
+      call elastic_constants(properties, young, poisson, density, error)
+      if (.not. allocated(error)) allocate (material, source=new_neo_hookean(young, poisson, density))
+   end subroutine neo_hookean_from_properties
 
    pure function neo_hookean_n_state(self) result(n)
       class(neo_hookean_t), intent(in) :: self

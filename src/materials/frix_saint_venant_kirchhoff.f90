@@ -9,11 +9,14 @@
 !> softens and reaches a limit point; use MAT_Struct_NeoHooke for large compression.
 module frix_saint_venant_kirchhoff
    use frix_kinds, only: dp
-   use frix_linear_elastic, only: linear_elastic_t
+   use frix_error, only: error_t
+   use frix_property_list, only: property_list_t
+   use frix_material, only: material_t
+   use frix_linear_elastic, only: linear_elastic_t, elastic_constants
    implicit none
    private
 
-   public :: saint_venant_kirchhoff_t, new_saint_venant_kirchhoff
+   public :: saint_venant_kirchhoff_t, new_saint_venant_kirchhoff, saint_venant_kirchhoff_from_properties
 
    !> St. Venant-Kirchhoff material: Hooke's law between E and S.
    type, extends(linear_elastic_t) :: saint_venant_kirchhoff_t
@@ -32,4 +35,14 @@ contains
       material%poisson = poisson
       material%density = density
    end function new_saint_venant_kirchhoff
+
+   !> The material of deck properties YOUNG, NUE, DENS (frix_linear_elastic's elastic_constants).
+   subroutine saint_venant_kirchhoff_from_properties(properties, material, error)
+      type(property_list_t), intent(in) :: properties
+      class(material_t), allocatable, intent(out) :: material
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: young, poisson, density
+      call elastic_constants(properties, young, poisson, density, error)
+      if (.not. allocated(error)) allocate (material, source=new_saint_venant_kirchhoff(young, poisson, density))
+   end subroutine saint_venant_kirchhoff_from_properties
 end module frix_saint_venant_kirchhoff

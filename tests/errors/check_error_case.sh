@@ -16,9 +16,11 @@ deck=$2
 if [ ! -x "$frix" ]; then echo "FAIL: no executable $frix" >&2; exit 1; fi
 if [ ! -f "$deck" ]; then echo "FAIL: no deck $deck" >&2; exit 1; fi
 
-# gfortran's `error stop` prints a backtrace by default even on an orderly exit (frix's main
-# ends a rejected deck with `error stop 1`); switch that off so that what is checked below is
-# a real crash: a runtime error message or a signal (exit status >= 128).
+# frix ends a rejected deck with exit status 1 through exit_with_status (src/core/frix_process.f90,
+# C exit(): no STOP banner, no backtrace). gfortran's runtime prints a backtrace on `error stop`
+# and on runtime errors unless GFORTRAN_ERROR_BACKTRACE=0; it is switched off so that the
+# output holds only frix's messages and, on a crash, the runtime error message, which is what
+# the checks below look for (a signal shows as exit status >= 128).
 export GFORTRAN_ERROR_BACKTRACE=0
 
 workdir=$(mktemp -d)

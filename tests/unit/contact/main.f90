@@ -6,10 +6,14 @@ program test_contact
    use test_friction_law_registry, only: collect_friction_law_registry
    use test_contact_tangent, only: collect_contact_tangent
    use test_contact_physics, only: collect_contact_physics
+   use test_contact_patches, only: collect_contact_patches
+   use test_contact_search, only: collect_contact_search
    implicit none
    call run_suites([new_testsuite('dual_number', collect_dual_number), &
                     new_testsuite('face_projection', collect_face_projection), &
                     new_testsuite('friction_law_registry', collect_friction_law_registry), &
                     new_testsuite('contact_tangent', collect_contact_tangent), &
-                    new_testsuite('contact_physics', collect_contact_physics)])
+                    new_testsuite('contact_physics', collect_contact_physics), &
+                    new_testsuite('contact_patches', collect_contact_patches), &
+                    new_testsuite('contact_search', collect_contact_search)])
 end program test_contact

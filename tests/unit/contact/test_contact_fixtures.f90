@@ -13,7 +13,7 @@ module test_contact_fixtures
    private
 
    public :: warped_face, flat_face, make_parameters, check_face_tangent, check_plane_tangent
-   public :: asymmetry, slave_below, grid_patch, slave_below_smoothed
+   public :: asymmetry, slave_below, grid_patch, slave_below_smoothed, grid_faces
 
    !> A warped, skewed face (no two edges parallel, nodes not coplanar), counter-clockwise
    !> seen from +z: outward normal roughly +z. Size about 2.
@@ -114,6 +114,21 @@ contains
          x(3) = 0.15_dp*(x(1) - 1.5_dp)**2 - 0.1_dp*(x(2) - 1.5_dp)**2 + 0.05_dp*x(1)*x(2)
       end function grid_point
    end subroutine grid_patch
+
+   !> The faces of an (n + 1) x (n + 1) grid of nodes numbered 1 + i + (n + 1) j (i, j = 0..n,
+   !> i along x): face 1 + i + n j has corners (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1),
+   !> counter-clockwise seen from +z.
+   pure function grid_faces(n) result(faces)
+      integer, intent(in) :: n
+      integer :: faces(4, n*n)
+      integer :: i, j, corner
+      do j = 0, n - 1
+         do i = 0, n - 1
+            corner = 1 + i + (n + 1)*j
+            faces(:, 1 + i + n*j) = [corner, corner + 1, corner + n + 2, corner + n + 1]
+         end do
+      end do
+   end function grid_faces
 
    !> The point at depth `depth` below x(xi) along the smoothed normal there: its projection
    !> along the smoothed normals is xi.

@@ -4,7 +4,10 @@ module test_element_registry
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_message_contains
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
-   use frix_element_registry, only: create_element
+   use frix_kinds, only: dp
+   use frix_property_list, only: property_list_t
+   use frix_element_registry, only: create_element, element_shape_t, find_element_shape, element_shape_choices, &
+                                    element_shape_example, max_element_nodes
    implicit none
    private
 
@@ -20,7 +23,9 @@ contains
               new_unittest('unknown shape is an error', test_unknown_shape), &
               new_unittest('bad EAS count is an error', test_bad_count), &
               new_unittest('HEXA8-E3 with another EAS count is an error', test_hexa8_e3_conflict), &
-              new_unittest('unknown kinematics is an error', test_bad_kinematics) &
+              new_unittest('unknown kinematics is an error', test_bad_kinematics), &
+              new_unittest('shapes answer node count and options', test_shape_info), &
+              new_unittest('unknown option is an error', test_unknown_option) &
               ]
    end subroutine collect_element_registry
 
@@ -32,7 +37,7 @@ contains
       class(element_t), allocatable :: element
       integer :: i
       do i = 1, size(counts)
-         call create_element('hex8', counts(i), kinematics_total_lagrangian, element, error)
+         call create_element('hex8', eas(counts(i)), kinematics_total_lagrangian, element, error)
          if (allocated(error)) return
          call check(error, element%n_enhanced() == counts(i) .and. element%name == trim(names(i)) .and. &
                     element%n_nodes() == 8 .and. element%kinematics == kinematics_total_lagrangian, &
@@ -44,12 +49,12 @@ contains
    subroutine test_hexa8_e3(error)
       type(error_t), allocatable, intent(out) :: error
       class(element_t), allocatable :: element
-      call create_element('Hexa8-E3', 0, kinematics_linear, element, error)
+      call create_element('Hexa8-E3', eas(0), kinematics_linear, element, error)
       if (allocated(error)) return
       call check(error, element%n_enhanced() == 3 .and. element%name == 'HEX8-EAS3', &
                  'Hexa8-E3 gave '//element%name)
       if (allocated(error)) return
-      call create_element('HEXA8-E3', 3, kinematics_linear, element, error)
+      call create_element('HEXA8-E3', eas(3), kinematics_linear, element, error)
       if (allocated(error)) return
       call check(error, element%n_enhanced() == 3, 'HEXA8-E3 with n_eas 3')
    end subroutine test_hexa8_e3
@@ -58,7 +63,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: create_error
       class(element_t), allocatable :: element
-      call create_element('TET4', 0, kinematics_linear, element, create_error)
+      call create_element('TET4', eas(0), kinematics_linear, element, create_error)
       call check_message_contains(error, create_error, 'unknown element shape "TET4"')
       if (allocated(error)) return
       call check_message_contains(error, create_error, 'HEX8, HEXA8-E3')
@@ -68,7 +73,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: create_error
       class(element_t), allocatable :: element
-      call create_element('HEX8', 7, kinematics_linear, element, create_error)
+      call create_element('HEX8', eas(7), kinematics_linear, element, create_error)
       call check_message_contains(error, create_error, 'unsupported number of EAS parameters 7')
       if (allocated(error)) return
       call check_message_contains(error, create_error, '0, 3, 9, 21, 30')
@@ -78,7 +83,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: create_error
       class(element_t), allocatable :: element
-      call create_element('HEXA8-E3', 9, kinematics_linear, element, create_error)
+      call create_element('HEXA8-E3', eas(9), kinematics_linear, element, create_error)
       call check_message_contains(error, create_error, 'conflicts with the EAS count 9')
    end subroutine test_hexa8_e3_conflict
 
@@ -86,7 +91,43 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: create_error
       class(element_t), allocatable :: element
-      call create_element('HEX8', 0, 7, element, create_error)
+      call create_element('HEX8', eas(0), 7, element, create_error)
       call check_message_contains(error, create_error, 'unknown kinematics')
    end subroutine test_bad_kinematics
+
+   !> The options `EAS n` (none for n = 0, as a deck line without EAS).
+   function eas(n) result(options)
+      integer, intent(in) :: n
+      type(property_list_t) :: options
+      allocate (options%names(0), options%values(0))
+      if (n /= 0) call options%add('EAS', real(n, dp))
+   end function eas
+
+   subroutine test_shape_info(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(element_shape_t) :: shape
+      logical :: found
+      call find_element_shape('hexa8-e3', shape, found)
+      call check(error, found .and. shape%n_nodes == 8 .and. shape%family == 'HEX8' .and. &
+                 size(shape%options) == 1, 'HEXA8-E3 shape')
+      if (allocated(error)) return
+      call check(error, shape%options(1)%name == 'EAS' .and. shape%options(1)%whole, 'EAS option')
+      if (allocated(error)) return
+      call find_element_shape('TET4', shape, found)
+      call check(error, .not. found, 'TET4 is no shape')
+      if (allocated(error)) return
+      call check(error, element_shape_choices() == 'HEX8 or HEXA8-E3' .and. element_shape_example() == 'HEX8' &
+                 .and. max_element_nodes() == 8, 'choices '//element_shape_choices())
+   end subroutine test_shape_info
+
+   subroutine test_unknown_option(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: create_error
+      class(element_t), allocatable :: element
+      type(property_list_t) :: options
+      options = eas(9)
+      call options%add('GP', 2.0_dp)
+      call create_element('HEX8', options, kinematics_linear, element, create_error)
+      call check_message_contains(error, create_error, 'HEX8: unknown property "GP" (valid: EAS)')
+   end subroutine test_unknown_option
 end module test_element_registry

@@ -13,6 +13,7 @@ module test_hex8
    use frix_linear_elastic, only: new_linear_elastic, hooke_tangent
    use frix_saint_venant_kirchhoff, only: new_saint_venant_kirchhoff
    use frix_neo_hookean, only: new_neo_hookean
+   use test_unsymmetric_material, only: new_unsymmetric_elastic
    use test_element_fixtures, only: distorted_coords, sample_displacement, parent_corner, &
                                     symmetric_eigenvalues, solve_dense, element_size
    implicit none
@@ -50,6 +51,7 @@ contains
               new_unittest('tangent vs FD, total Lagrangian, EAS9', test_tangent_total_9), &
               new_unittest('tangent vs FD, total Lagrangian, EAS21', test_tangent_total_21), &
               new_unittest('tangent vs FD, total Lagrangian, EAS30', test_tangent_total_30), &
+              new_unittest('unsymmetric material: full tangent vs FD, every variant', test_unsymmetric_tangent), &
               new_unittest('six rigid-body modes, every variant', test_rigid_body_modes), &
               new_unittest('linear patch: constant stress, alpha = 0', test_patch_linear), &
               new_unittest('total Lagrangian patch: homogeneous F', test_patch_total_lagrangian), &
@@ -151,14 +153,34 @@ contains
       if (allocated(error)) error%message = 'neo-Hookean: '//error%message
    end subroutine check_tangent_total
 
+   !> A material with an unsymmetric tangent (skew part 0.2 E): for every EAS variant and both
+   !> kinematics the element tangent is d fint / du (every block computed, K_au of the
+   !> condensation not taken as K_ua^T), and it is unsymmetric.
+   subroutine test_unsymmetric_tangent(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: v
+      do v = 1, size(variants)
+         call check_tangent(new_hex8(variants(v), kinematics_linear), &
+                            new_unsymmetric_elastic(young, poisson, 0.2_dp), 0.01_dp*element_size, error, &
+                            symmetric=.false.)
+         if (allocated(error)) return
+         call check_tangent(new_hex8(variants(v), kinematics_total_lagrangian), &
+                            new_unsymmetric_elastic(young, poisson, 0.2_dp), 0.15_dp*element_size, error, &
+                            symmetric=.false.)
+         if (allocated(error)) return
+      end do
+   end subroutine test_unsymmetric_tangent
+
    !> K against central differences of fint over all 24 dofs on the distorted element; each
    !> perturbed evaluation starts its local EAS solve from the alpha of the base state.
-   !> Also checks that K is symmetric (hyperelastic material, symmetric condensation).
-   subroutine check_tangent(element, material, amplitude, error)
+   !> Also checks that K is symmetric (hyperelastic material, symmetric condensation), or with
+   !> `symmetric` false that it is not (by more than 1e-3 max|K|).
+   subroutine check_tangent(element, material, amplitude, error, symmetric)
       type(hex8_t), intent(in) :: element
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: amplitude
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: symmetric
       real(dp) :: coords(3, 8), u(3, 8), perturbed(3, 8), fint(24), plus(24), minus(24)
       real(dp) :: tangent(24, 24), difference(24, 24), state_old(0, 8), state_new(0, 8)
       real(dp) :: alpha(element%n_eas), trial(element%n_eas), step, scale
@@ -189,6 +211,13 @@ contains
       call check(error, maxval(abs(difference)) <= fd_tolerance*scale, element%name//': max|K - K_fd| = '// &
                  to_string(maxval(abs(difference)))//', max|K| = '//to_string(scale))
       if (allocated(error)) return
+      if (present(symmetric)) then
+         if (.not. symmetric) then
+            call check(error, maxval(abs(tangent - transpose(tangent))) > 1.0e-3_dp*scale, &
+                       element%name//': K symmetric for an unsymmetric material')
+            return
+         end if
+      end if
       call check(error, maxval(abs(tangent - transpose(tangent))) <= 1.0e-12_dp*scale, &
                  element%name//': K not symmetric')
    end subroutine check_tangent

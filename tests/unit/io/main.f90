@@ -5,15 +5,11 @@ program test_io
    use test_listing_writer, only: collect_listing_writer
    use test_history_writer, only: collect_history_writer
    use test_vtk_writer, only: collect_vtk_writer
-   use test_block_generator, only: collect_block_generator
-   use test_deck_reader, only: collect_deck_reader
    implicit none
    call run_suites([ &
                    new_testsuite('field_recovery', collect_field_recovery), &
                    new_testsuite('listing_writer', collect_listing_writer), &
                    new_testsuite('history_writer', collect_history_writer), &
-                   new_testsuite('vtk_writer', collect_vtk_writer), &
-                   new_testsuite('block_generator', collect_block_generator), &
-                   new_testsuite('deck_reader', collect_deck_reader) &
+                   new_testsuite('vtk_writer', collect_vtk_writer) &
                    ])
 end program test_io

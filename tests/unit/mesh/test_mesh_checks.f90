@@ -203,6 +203,7 @@ contains
                  mesh%surfaces(4)%name == 'copy_bottom', 'shifted surface copy_bottom')
       if (allocated(error)) return
       call check(error, all(mesh%node_sets(mesh%find_node_set('copy_origin'))%nodes == [13]), 'shifted node set')
+      if (allocated(error)) return
       call mesh_bounding_box(mesh, lower, upper)
       call check_close(error, upper(1), 7.0_dp, 0.0_dp, 0.0_dp, 'box reaches x = 2 + 5')
       if (allocated(error)) return

@@ -1,7 +1,7 @@
-!> Sorting helper of the deck reader: a stable bottom-up merge sort of integer keys (one or
+!> Sorting helper of mesh selections: a stable bottom-up merge sort of integer keys (one or
 !> several integers per key, compared lexicographically) in O(n log n) - used to sort node
 !> sets and to find faces shared by two elements (keys = sorted face node numbers).
-module frix_deck_lookup
+module frix_sorted_order
    implicit none
    private
 
@@ -66,4 +66,4 @@ contains
       end do
    end function less
 
-end module frix_deck_lookup
+end module frix_sorted_order

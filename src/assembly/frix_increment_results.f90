@@ -1,0 +1,56 @@
+!> The results of one converged increment, computed once after it is committed
+!> (frix_results_collection) and handed to every writer (frix_results_output): no writer
+!> evaluates an element or reads the solver. Units are the deck's.
+module frix_increment_results
+   use frix_kinds, only: dp
+   implicit none
+   private
+
+   public :: increment_results_t, named_field_t, contact_pass_results_t
+
+   !> A scalar per integration point, named by its material (an equivalent plastic strain, say):
+   !> values(n_points, n_elements), zero in the elements whose material does not have it.
+   type :: named_field_t
+      character(len=:), allocatable :: name
+      real(dp), allocatable :: values(:, :)
+   end type named_field_t
+
+   !> The contact table of one pass: its slave nodes and, per node, the columns of
+   !> contact_table_labels (gap, pressure, traction x y z, slip, status); the committed slip
+   !> history of the pass (restart data).
+   type :: contact_pass_results_t
+      integer :: pair_id = 0                 !! the deck's pair id
+      integer, allocatable :: nodes(:)       !! internal node numbers of the slave nodes
+      real(dp), allocatable :: values(:, :)  !! (7, n_slave_nodes)
+      real(dp), allocatable :: history(:, :) !! the pass's slip history, as restart reads it
+   end type contact_pass_results_t
+
+   type :: increment_results_t
+      integer :: step = 0
+      integer :: increment = 0          !! within the step
+      real(dp) :: time = 0.0_dp         !! pseudo time (load factor)
+      integer :: iterations = 0         !! Newton iterations of the increment
+      !> (3, 0:iterations): ||r||, ||r|| / reference and |du . r| per residual evaluation
+      real(dp), allocatable :: iteration_log(:, :)
+      real(dp), allocatable :: displacement(:, :)   !! (3, n_nodes)
+      real(dp), allocatable :: reaction(:, :)       !! (3, n_nodes), zero on free equations
+      logical, allocatable :: constrained(:, :)     !! (3, n_nodes) equations with a Dirichlet condition
+      !> whether the increment is written in full: listing, VTK, POS3D, HDF5 (RESULTS EVERY,
+      !> and the last increment of every step); the CSV files receive every increment
+      logical :: full = .false.
+      !> whether the integration-point fields below are computed (`full`, with a VTK, POS3D or
+      !> HDF5 file to receive them)
+      logical :: has_fields = .false.
+      real(dp), allocatable :: stress(:, :, :)      !! (6, n_points, n_elements) Cauchy, frix Voigt
+      real(dp), allocatable :: strain(:, :, :)      !! (6, n_points, n_elements) engineering shears
+      type(named_field_t), allocatable :: point_fields(:)   !! the materials' named history variables
+      real(dp), allocatable :: alpha(:, :)          !! (max EAS parameters, n_elements) committed
+      real(dp), allocatable :: history(:, :, :)     !! (n_state, n_points, n_elements) committed
+      logical :: has_contact = .false.
+      type(contact_pass_results_t), allocatable :: contact(:)   !! one per contact pass
+      !> per node, over all passes (zero away from contact): pressure, traction (3, n),
+      !> gap, status (0 open, 1 stick, 2 slip), slip
+      real(dp), allocatable :: contact_pressure(:), contact_traction(:, :), contact_gap(:)
+      real(dp), allocatable :: contact_status(:), contact_slip(:)
+   end type increment_results_t
+end module frix_increment_results

@@ -1,0 +1,143 @@
+!> One contact pass: the nodes of a slave surface against the faces of a master surface or a
+!> rigid plane, with each slave node's current master face, friction branch and kernel result,
+!> and its committed slip history (anchor, accumulated slip). docs/contact.md, "In the global
+!> system".
+module frix_contact_pass
+   use frix_kinds, only: dp
+   use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
+   use frix_surface_load, only: face_area_weights
+   use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes
+   use frix_contact_patches, only: surface_patches_t, surface_faces
+   use frix_friction_law, only: branch_free
+   implicit none
+   private
+
+   public :: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, start_pass_state
+   public :: kernel_nodes
+
+   !> most nodes of one kernel call: slave, face, anchor face, smoothed-normal ring
+   integer, parameter :: max_kernel_nodes = 9 + max_ring_nodes
+
+   !> One pass: the nodes of a slave surface against the faces of a master surface or a plane.
+   type :: contact_pass_t
+      integer :: pair = 0                      !! index of the pass's contact pair (the model's)
+      logical :: rigid = .false.               !! master is the pair's rigid plane
+      integer, allocatable :: slave_nodes(:)   !! internal node numbers
+      real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
+      integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
+      real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
+      !> smoothed normals (NORMALS Smoothed): the patch of every master face
+      logical :: smooth = .false.
+      type(surface_patches_t) :: patches
+      ! the current iterate
+      integer, allocatable :: face(:)          !! master face of each slave node, 0: none
+      !> friction branch imposed on each slave node in this increment (branch_free: the law
+      !> decides; branch_stick after a slip reversal, frix_contact_assembly's slip_reversed)
+      integer, allocatable :: branch(:)
+      logical, allocatable :: released(:)          !! imposed once and released: not again
+      logical, allocatable :: slipped(:)           !! slipping at the last iterate
+      real(dp), allocatable :: slip_direction(:, :)  !! (3, n_slave) t/|t| at the last iterate
+      type(contact_point_result_t), allocatable :: result(:)
+      ! the last converged increment
+      integer, allocatable :: anchor_face(:)
+      real(dp), allocatable :: anchor_xi(:, :)     !! (2, n_slave)
+      real(dp), allocatable :: anchor_point(:, :)  !! (3, n_slave), rigid plane
+      logical, allocatable :: has_anchor(:)
+      real(dp), allocatable :: slip(:)             !! accumulated slip (length)
+   end type contact_pass_t
+
+contains
+
+   !> The slave nodes of a surface (in node order) and their tributary areas A_s: the
+   !> reference-face integrals of N_a (face_area_weights) summed over the faces at each node.
+   subroutine set_slave_nodes(mesh, surface, pass)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      type(contact_pass_t), intent(inout) :: pass
+      integer, allocatable :: position_of(:)
+      real(dp), allocatable :: node_area(:)
+      real(dp) :: coords(3, 4), weights(4)
+      integer :: k, a, node, n_slave, face_nodes(4)
+      allocate (position_of(mesh%n_nodes), source=0)
+      allocate (node_area(mesh%n_nodes), source=0.0_dp)
+      n_slave = 0
+      do k = 1, size(surface%elements)
+         face_nodes = mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), surface%elements(k))
+         coords = mesh%coords(:, face_nodes)
+         call face_area_weights(coords, weights)
+         do a = 1, 4
+            node = face_nodes(a)
+            if (position_of(node) == 0) then
+               n_slave = n_slave + 1
+               position_of(node) = n_slave
+            end if
+            node_area(node) = node_area(node) + weights(a)
+         end do
+      end do
+      allocate (pass%slave_nodes(n_slave))
+      do node = 1, mesh%n_nodes
+         if (position_of(node) > 0) pass%slave_nodes(position_of(node)) = node
+      end do
+      pass%area = node_area(pass%slave_nodes)
+   end subroutine set_slave_nodes
+
+   !> The master faces of a surface and the search band's geometric part: half the mean face
+   !> size, a face's size being the mean of its diagonals over sqrt(2) (reference, length).
+   subroutine set_master_faces(mesh, surface, pass)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      type(contact_pass_t), intent(inout) :: pass
+      real(dp) :: coords(3, 4), size_sum
+      integer :: k
+      pass%faces = surface_faces(mesh, surface)
+      size_sum = 0.0_dp
+      do k = 1, size(surface%elements)
+         coords = mesh%coords(:, pass%faces(:, k))
+         size_sum = size_sum + 0.5_dp*(norm2(coords(:, 3) - coords(:, 1)) + &
+                                       norm2(coords(:, 4) - coords(:, 2)))/sqrt(2.0_dp)
+      end do
+      pass%band = 0.5_dp*size_sum/max(1, size(surface%elements))
+   end subroutine set_master_faces
+
+   !> The per-node state of a pass whose slave nodes are set: no face, the law's branches, no
+   !> anchor, no slip.
+   subroutine start_pass_state(pass)
+      type(contact_pass_t), intent(inout) :: pass
+      integer :: n_slave
+      n_slave = size(pass%slave_nodes)
+      allocate (pass%face(n_slave), pass%anchor_face(n_slave), source=0)
+      allocate (pass%branch(n_slave), source=branch_free)
+      allocate (pass%released(n_slave), pass%slipped(n_slave), source=.false.)
+      allocate (pass%slip_direction(3, n_slave), source=0.0_dp)
+      allocate (pass%result(n_slave))
+      allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
+                source=0.0_dp)
+      allocate (pass%has_anchor(n_slave), source=.false.)
+   end subroutine start_pass_state
+
+   !> The nodes of slave i's contact kernel: the slave, its master face's 4 nodes, when its
+   !> committed anchor lies on another face that face's 4 nodes, and with smoothed normals the
+   !> face's ring, nodes(first_ring:n_nodes) (first_ring = 6 or 10).
+   pure subroutine kernel_nodes(pass, i, nodes, n_nodes, first_ring)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: i
+      integer, intent(out) :: nodes(max_kernel_nodes), n_nodes, first_ring
+      integer :: f
+      nodes = 0
+      f = pass%face(i)
+      nodes(1) = pass%slave_nodes(i)
+      nodes(2:5) = pass%faces(:, f)
+      n_nodes = 5
+      if (pass%has_anchor(i) .and. pass%anchor_face(i) /= f .and. pass%anchor_face(i) > 0) then
+         nodes(6:9) = pass%faces(:, pass%anchor_face(i))
+         n_nodes = 9
+      end if
+      first_ring = n_nodes + 1
+      if (pass%smooth) then
+         associate (ring_start => pass%patches%ring_start)
+            n_nodes = n_nodes + ring_start(f + 1) - ring_start(f)
+            nodes(first_ring:n_nodes) = pass%patches%ring_nodes(ring_start(f) + 1:ring_start(f + 1))
+         end associate
+      end if
+   end subroutine kernel_nodes
+end module frix_contact_pass

@@ -1,0 +1,212 @@
+!> The faces of a contact surface and the smoothed-normal patches of its faces.
+!>
+!> A master surface is a list of HEX8 element faces; as contact faces they are (4, n) mesh node
+!> numbers in outward (HEX8 face) order, so that the face normal points out of the master body
+!> (docs/contact.md, "Kinematics"). The patch of face f is the set of faces that share a node
+!> with f: the averaged nodal normals of f's 4 nodes (NORMALS Smoothed, frix_contact_kernel's
+!> patch_normals) depend on the nodes of that patch, so they enter the kernel's tangent: f's
+!> own 4 nodes and its ring, the patch's other nodes (12 on a structured surface, at most
+!> max_ring_nodes).
+module frix_contact_patches
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
+   use frix_contact_kernel, only: max_ring_nodes
+   implicit none
+   private
+
+   public :: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, check_patch_rings
+   public :: ring_nodes_of, patch_faces_of
+
+   !> The patch of every face of a surface, compressed rows over the faces:
+   !> ring_nodes(ring_start(f) + 1 : ring_start(f + 1)) are the mesh numbers of face f's ring
+   !> nodes; patch_faces(:, patch_start(f) + 1 : patch_start(f + 1)) the patch's faces (f among
+   !> them) in local node numbers (1-4 face f's nodes, 4 + j ring node j), as node_face_contact
+   !> takes them.
+   type :: surface_patches_t
+      integer, allocatable :: ring_start(:), ring_nodes(:), patch_start(:), patch_faces(:, :)
+   end type surface_patches_t
+
+contains
+
+   !> The faces of a surface of HEX8 element faces, as (4, n) mesh node numbers in outward
+   !> (HEX8 face) order.
+   pure function surface_faces(mesh, surface) result(faces)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      integer :: faces(4, size(surface%elements))
+      integer :: k
+      do k = 1, size(surface%elements)
+         faces(:, k) = mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), surface%elements(k))
+      end do
+   end function surface_faces
+
+   !> The patch of every face of a surface (faces(4, n), mesh node numbers).
+   pure subroutine surface_patches(n_nodes, faces, patches)
+      integer, intent(in) :: n_nodes          !! nodes of the mesh
+      integer, intent(in) :: faces(:, :)      !! (4, n_faces)
+      type(surface_patches_t), intent(out) :: patches
+      integer, allocatable :: node_start(:), node_faces(:), adjacent(:), ring(:), local(:, :)
+      integer :: n_faces, f
+      n_faces = size(faces, 2)
+      call faces_around_nodes(n_nodes, faces, node_start, node_faces)
+      allocate (patches%ring_start(n_faces + 1), patches%patch_start(n_faces + 1))
+      allocate (patches%ring_nodes(max(1, max_ring_nodes*n_faces)), patches%patch_faces(4, max(1, 9*n_faces)))
+      patches%ring_start(1) = 0
+      patches%patch_start(1) = 0
+      do f = 1, n_faces
+         adjacent = adjacent_faces(faces, f, node_start, node_faces)
+         call local_patch(faces, f, adjacent, ring, local)
+         call append_patch(patches, f, ring, local)
+      end do
+   end subroutine surface_patches
+
+   !> The faces around each node as compressed rows over the mesh's nodes:
+   !> node_faces(node_start(n) + 1 : node_start(n + 1)) hold node n's faces, in face order.
+   pure subroutine faces_around_nodes(n_nodes, faces, node_start, node_faces)
+      integer, intent(in) :: n_nodes, faces(:, :)
+      integer, allocatable, intent(out) :: node_start(:), node_faces(:)
+      integer, allocatable :: fill(:)
+      integer :: f, a, node
+      allocate (node_start(n_nodes + 1), source=0)
+      do f = 1, size(faces, 2)
+         node_start(faces(:, f) + 1) = node_start(faces(:, f) + 1) + 1
+      end do
+      do node = 1, n_nodes
+         node_start(node + 1) = node_start(node + 1) + node_start(node)
+      end do
+      allocate (node_faces(node_start(n_nodes + 1)))
+      fill = node_start(:n_nodes)
+      do f = 1, size(faces, 2)
+         do a = 1, 4
+            fill(faces(a, f)) = fill(faces(a, f)) + 1
+            node_faces(fill(faces(a, f))) = f
+         end do
+      end do
+   end subroutine faces_around_nodes
+
+   !> The faces that share a node with face f, in the order met over f's nodes.
+   pure function adjacent_faces(faces, f, node_start, node_faces) result(adjacent)
+      integer, intent(in) :: faces(:, :), f, node_start(:), node_faces(:)
+      integer, allocatable :: adjacent(:)
+      integer :: a, k, node
+      allocate (adjacent(0))
+      do a = 1, 4
+         node = faces(a, f)
+         do k = node_start(node) + 1, node_start(node + 1)
+            if (all(adjacent /= node_faces(k))) adjacent = [adjacent, node_faces(k)]
+         end do
+      end do
+   end function adjacent_faces
+
+   !> Face f's patch in local node numbers: the ring (mesh numbers of the patch's nodes other
+   !> than f's, in the order met) and local(:, g), adjacent face g's nodes as 1-4 (f's nodes)
+   !> or 4 + j (ring node j).
+   pure subroutine local_patch(faces, f, adjacent, ring, local)
+      integer, intent(in) :: faces(:, :), f, adjacent(:)
+      integer, allocatable, intent(out) :: ring(:), local(:, :)
+      integer :: g, b, node, position
+      allocate (ring(0), local(4, size(adjacent)))
+      do g = 1, size(adjacent)
+         do b = 1, 4
+            node = faces(b, adjacent(g))
+            position = findloc(faces(:, f), node, dim=1)
+            if (position == 0) then
+               position = findloc(ring, node, dim=1)
+               if (position == 0) then
+                  ring = [ring, node]
+                  position = size(ring)
+               end if
+               position = 4 + position
+            end if
+            local(b, g) = position
+         end do
+      end do
+   end subroutine local_patch
+
+   !> Store face f's ring and local patch faces after those of faces 1 .. f - 1 (growing the
+   !> rows where a surface has more than the structured 12 ring nodes and 9 faces per patch).
+   pure subroutine append_patch(patches, f, ring, local)
+      type(surface_patches_t), intent(inout) :: patches
+      integer, intent(in) :: f, ring(:), local(:, :)
+      integer, allocatable :: grown_ring(:), grown(:, :)
+      integer :: n_ring, n_adjacent
+      n_ring = size(ring)
+      n_adjacent = size(local, 2)
+      associate (ring_start => patches%ring_start, patch_start => patches%patch_start)
+         if (ring_start(f) + n_ring > size(patches%ring_nodes)) then
+            allocate (grown_ring(2*(ring_start(f) + n_ring)))
+            grown_ring(:ring_start(f)) = patches%ring_nodes(:ring_start(f))
+            call move_alloc(grown_ring, patches%ring_nodes)
+         end if
+         patches%ring_nodes(ring_start(f) + 1:ring_start(f) + n_ring) = ring
+         ring_start(f + 1) = ring_start(f) + n_ring
+         if (patch_start(f) + n_adjacent > size(patches%patch_faces, 2)) then
+            allocate (grown(4, 2*(patch_start(f) + n_adjacent)))
+            grown(:, :patch_start(f)) = patches%patch_faces(:, :patch_start(f))
+            call move_alloc(grown, patches%patch_faces)
+         end if
+         patches%patch_faces(:, patch_start(f) + 1:patch_start(f) + n_adjacent) = local
+         patch_start(f + 1) = patch_start(f) + n_adjacent
+      end associate
+   end subroutine append_patch
+
+   !> Mesh numbers of face f's ring nodes.
+   pure function ring_nodes_of(patches, f) result(nodes)
+      type(surface_patches_t), intent(in) :: patches
+      integer, intent(in) :: f
+      integer, allocatable :: nodes(:)
+      nodes = patches%ring_nodes(patches%ring_start(f) + 1:patches%ring_start(f + 1))
+   end function ring_nodes_of
+
+   !> Face f's patch faces in local node numbers (4, n).
+   pure function patch_faces_of(patches, f) result(local)
+      type(surface_patches_t), intent(in) :: patches
+      integer, intent(in) :: f
+      integer, allocatable :: local(:, :)
+      local = patches%patch_faces(:, patches%patch_start(f) + 1:patches%patch_start(f + 1))
+   end function patch_faces_of
+
+   !> The face whose ring has the most nodes (1 for no face).
+   pure integer function largest_ring_face(patches) result(f)
+      type(surface_patches_t), intent(in) :: patches
+      f = 1
+      associate (ring_start => patches%ring_start)
+         if (size(ring_start) > 1) f = maxloc(ring_start(2:) - ring_start(:size(ring_start) - 1), dim=1)
+      end associate
+   end function largest_ring_face
+
+   !> An error if a face has more ring nodes than the kernel takes (max_ring_nodes); the deck
+   !> reader reports it first, at the NORMALS keyword, through largest_patch_ring.
+   pure subroutine check_patch_rings(patches, error)
+      type(surface_patches_t), intent(in) :: patches
+      type(error_t), allocatable, intent(out) :: error
+      integer :: f, n_ring
+      if (size(patches%ring_start) < 2) return
+      f = largest_ring_face(patches)
+      n_ring = patches%ring_start(f + 1) - patches%ring_start(f)
+      if (n_ring > max_ring_nodes) &
+         call fatal_error(error, 'NORMALS Smoothed: a master face has '//to_string(n_ring)// &
+                          ' nodes around it, at most '//to_string(max_ring_nodes)//' are supported')
+   end subroutine check_patch_rings
+
+   !> The master surface's largest smoothed-normal ring: its size and the face that has it
+   !> (for the deck reader's check of NORMALS Smoothed against max_ring_nodes).
+   subroutine largest_patch_ring(mesh, surface, n_ring, face_nodes)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      integer, intent(out) :: n_ring          !! ring nodes of that face
+      integer, intent(out) :: face_nodes(4)   !! mesh node numbers of that face
+      integer, allocatable :: faces(:, :)
+      type(surface_patches_t) :: patches
+      integer :: f
+      n_ring = 0
+      face_nodes = 0
+      if (size(surface%elements) == 0) return
+      faces = surface_faces(mesh, surface)
+      call surface_patches(mesh%n_nodes, faces, patches)
+      f = largest_ring_face(patches)
+      n_ring = patches%ring_start(f + 1) - patches%ring_start(f)
+      face_nodes = faces(:, f)
+   end subroutine largest_patch_ring
+end module frix_contact_patches

@@ -1,0 +1,299 @@
+!> The contact search of a deformable pass: which master face each slave node touches, and the
+!> initial anchors of the reference configuration. docs/contact.md, "In the global system".
+!>
+!> Each slave node is given the master face whose closest point (clamped to the face: an edge
+!> or corner point when the node lies beyond it) is nearest; the node's current face is kept
+!> on ties, so that a node on an edge shared by two faces does not chatter between them. With
+!> smoothed normals the nearest face whose normal projection along the smoothed normals lies
+!> inside it comes first (docs/contact.md, "Smoothed normals"). A face is a candidate when its
+!> current bounding box inflated by the search band holds the node and the node is at most the
+!> band above it (gap <= band). Candidates come from a uniform bucket grid of the boxes,
+!> rebuilt at every search (linear cost).
+!>
+!> Positions are current: x = X + u, X the mesh's reference coordinates (3, n_nodes), u the
+!> displacements node-major (3 n_nodes).
+module frix_contact_search
+   use frix_kinds, only: dp
+   use frix_face_projection, only: face_position, face_normal, closest_point_in_face, face_contains
+   use frix_contact_kernel, only: patch_normals, smooth_projection, smooth_normal_at
+   use frix_contact_patches, only: ring_nodes_of, patch_faces_of
+   use frix_contact_pass, only: contact_pass_t
+   implicit none
+   private
+
+   public :: assign_faces, initial_anchors, plane_anchors, current_nodes, face_nodal_normals
+
+   real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
+   integer, parameter :: max_cells = 200              !! most grid cells along an axis
+
+   !> Uniform bucket grid of the master faces' inflated bounding boxes: the faces whose box
+   !> meets cell c are cell_faces(cell_start(c) + 1 : cell_start(c + 1)); cells are numbered
+   !> x fastest.
+   type :: face_grid_t
+      real(dp), allocatable :: lower(:, :), upper(:, :)  !! (3, n_faces) box corners
+      real(dp) :: origin(3) = 0.0_dp
+      real(dp) :: cell_size = 0.0_dp
+      integer :: n_cells(3) = 1
+      integer, allocatable :: cell_start(:), cell_faces(:)
+   end type face_grid_t
+
+   !> The master surface of a pass at the current displacements.
+   type :: master_state_t
+      real(dp), allocatable :: x_faces(:, :, :)     !! (3, 4, n_faces) current face nodes
+      real(dp), allocatable :: node_normal(:, :)    !! (3, n_nodes) smoothed nodal normals
+      type(face_grid_t) :: grid
+   end type master_state_t
+
+contains
+
+   !> The nearest master face of every slave node of a deformable pass at displacements u
+   !> (pass%face; 0 for none). pass%face holds the current faces on entry (kept on ties).
+   subroutine assign_faces(coords, u, edge_tolerance, pass)
+      real(dp), intent(in) :: coords(:, :)       !! reference coordinates (3, n_nodes)
+      real(dp), intent(in) :: u(:)               !! displacements (3 n_nodes)
+      real(dp), intent(in) :: edge_tolerance     !! the pair's, parent coordinates
+      type(contact_pass_t), intent(inout) :: pass
+      type(master_state_t) :: master
+      real(dp) :: x_slave(3)
+      integer :: f, i
+      if (size(pass%faces, 2) == 0) then
+         pass%face = 0
+         return
+      end if
+      allocate (master%x_faces(3, 4, size(pass%faces, 2)))
+      do f = 1, size(pass%faces, 2)
+         master%x_faces(:, :, f) = current_nodes(coords, u, pass%faces(:, f))
+      end do
+      call build_face_grid(master%x_faces, pass%band, master%grid)
+      if (pass%smooth) then
+         ! the averaged normal of every master node, once per search
+         allocate (master%node_normal(3, size(coords, 2)), source=0.0_dp)
+         do f = 1, size(pass%faces, 2)
+            master%node_normal(:, pass%faces(:, f)) = face_nodal_normals(coords, u, pass, f)
+         end do
+      end if
+      do i = 1, size(pass%slave_nodes)
+         associate (s => pass%slave_nodes(i))
+            x_slave = coords(:, s) + u(3*s - 2:3*s)
+         end associate
+         pass%face(i) = nearest_face(pass, master, x_slave, pass%face(i), edge_tolerance)
+      end do
+   end subroutine assign_faces
+
+   !> The face given to a slave node at x_slave (0: none), `current` its face so far.
+   integer function nearest_face(pass, master, x_slave, current, edge_tolerance) result(face)
+      type(contact_pass_t), intent(in) :: pass
+      type(master_state_t), intent(in) :: master
+      real(dp), intent(in) :: x_slave(3)
+      integer, intent(in) :: current
+      real(dp), intent(in) :: edge_tolerance
+      real(dp) :: x_face(3, 4), xi(2), closest(3), distance, gap, best, best_inside
+      integer :: k, f, c, best_face, best_inside_face
+      logical :: fixed(2), inside
+      best = 0.5_dp*huge(1.0_dp)   ! best*(1 + tie_tolerance) must not overflow
+      best_face = 0
+      best_inside = best
+      best_inside_face = 0
+      c = grid_cell(master%grid, x_slave)
+      if (c > 0) then
+         do k = master%grid%cell_start(c) + 1, master%grid%cell_start(c + 1)
+            f = master%grid%cell_faces(k)
+            if (any(x_slave < master%grid%lower(:, f)) .or. any(x_slave > master%grid%upper(:, f))) cycle
+            x_face = master%x_faces(:, :, f)
+            if (pass%smooth) then
+               call smooth_candidate(x_face, master%node_normal(:, pass%faces(:, f)), x_slave, edge_tolerance, &
+                                     distance, gap, inside)
+               if (inside .and. gap <= pass%band) call keep_nearer(f, distance, current, best_inside, best_inside_face)
+            end if
+            call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
+            closest = face_position(x_face, xi)
+            distance = norm2(x_slave - closest)
+            gap = dot_product(x_slave - closest, face_normal(x_face, xi))
+            if (gap > pass%band) cycle
+            call keep_nearer(f, distance, current, best, best_face)
+         end do
+      end if
+      ! smoothed normals: the nearest face whose normal projection lies inside it, else
+      ! (beyond a free edge of the master surface, or no projection) the nearest face
+      face = merge(best_inside_face, best_face, best_inside_face > 0)
+   end function nearest_face
+
+   !> Make face f the best so far if it is nearer, or as near (within tie_tolerance) and the
+   !> node's current face, so that a node on a shared edge does not chatter.
+   pure subroutine keep_nearer(f, distance, current, best, best_face)
+      integer, intent(in) :: f, current
+      real(dp), intent(in) :: distance
+      real(dp), intent(inout) :: best
+      integer, intent(inout) :: best_face
+      if (distance < best*(1.0_dp - tie_tolerance) .or. &
+          (distance <= best*(1.0_dp + tie_tolerance) .and. f == current)) then
+         best = distance
+         best_face = f
+      end if
+   end subroutine keep_nearer
+
+   !> A face's normal projection along the smoothed normals (nodal normals `nodal`): distance,
+   !> gap (along the smoothed normal there) and whether it lies inside the face.
+   subroutine smooth_candidate(x_face, nodal, x_slave, edge_tolerance, distance, gap, inside)
+      real(dp), intent(in) :: x_face(3, 4), nodal(3, 4), x_slave(3), edge_tolerance
+      real(dp), intent(out) :: distance, gap
+      logical, intent(out) :: inside
+      real(dp) :: xi(2), jacobian(2, 2), offset(3)
+      logical :: converged
+      call smooth_projection(x_face, nodal, x_slave, xi, converged, jacobian)
+      inside = converged
+      if (converged) inside = face_contains(xi, edge_tolerance)
+      distance = huge(1.0_dp)
+      gap = huge(1.0_dp)
+      if (.not. inside) return
+      offset = x_slave - face_position(x_face, xi)
+      distance = norm2(offset)
+      gap = dot_product(offset, smooth_normal_at(nodal, xi))
+   end subroutine smooth_candidate
+
+   !> The bucket grid of faces x_faces (3, 4, n >= 1), boxes inflated by band: cells about the
+   !> size of the largest box, at most max_cells along an axis.
+   subroutine build_face_grid(x_faces, band, grid)
+      real(dp), intent(in) :: x_faces(:, :, :), band
+      type(face_grid_t), intent(out) :: grid
+      integer, allocatable :: counts(:)
+      integer :: f, c, n_faces
+      n_faces = size(x_faces, 3)
+      allocate (grid%lower(3, n_faces), grid%upper(3, n_faces))
+      do f = 1, n_faces
+         grid%lower(:, f) = minval(x_faces(:, :, f), dim=2) - band
+         grid%upper(:, f) = maxval(x_faces(:, :, f), dim=2) + band
+      end do
+      grid%origin = minval(grid%lower, dim=2)
+      grid%cell_size = max(maxval(grid%upper - grid%lower), maxval(maxval(grid%upper, dim=2) - grid%origin)/max_cells, &
+                           tiny(1.0_dp))
+      grid%n_cells = max(1, min(ceiling((maxval(grid%upper, dim=2) - grid%origin)/grid%cell_size), max_cells))
+      ! faces per cell as compressed rows: count, prefix sums, fill
+      allocate (counts(product(grid%n_cells)), source=0)
+      do f = 1, n_faces
+         call visit_cells(grid, f, counts, .false.)
+      end do
+      allocate (grid%cell_start(product(grid%n_cells) + 1))
+      grid%cell_start(1) = 0
+      do c = 1, product(grid%n_cells)
+         grid%cell_start(c + 1) = grid%cell_start(c) + counts(c)
+      end do
+      allocate (grid%cell_faces(grid%cell_start(product(grid%n_cells) + 1)))
+      counts = grid%cell_start(:product(grid%n_cells))
+      do f = 1, n_faces
+         call visit_cells(grid, f, counts, .true.)
+      end do
+   end subroutine build_face_grid
+
+   !> Count face f in every cell its box covers, or (fill) also store it there.
+   pure subroutine visit_cells(grid, f, counts, fill)
+      type(face_grid_t), intent(inout) :: grid
+      integer, intent(in) :: f
+      integer, intent(inout) :: counts(:)
+      logical, intent(in) :: fill
+      integer :: lo(3), hi(3), ix, iy, iz, c
+      lo = cell_of(grid, grid%lower(:, f))
+      hi = cell_of(grid, grid%upper(:, f))
+      do iz = lo(3), hi(3)
+         do iy = lo(2), hi(2)
+            do ix = lo(1), hi(1)
+               c = ix + grid%n_cells(1)*((iy - 1) + grid%n_cells(2)*(iz - 1))
+               counts(c) = counts(c) + 1
+               if (fill) grid%cell_faces(counts(c)) = f
+            end do
+         end do
+      end do
+   end subroutine visit_cells
+
+   !> The cell (x, y, z indices) of a point, clamped to the grid.
+   pure function cell_of(grid, point) result(index3)
+      type(face_grid_t), intent(in) :: grid
+      real(dp), intent(in) :: point(3)
+      integer :: index3(3)
+      real(dp) :: position(3)
+      ! clamped before the conversion, which is undefined for reals beyond the integers
+      position = min(real(grid%n_cells, dp), max(1.0_dp, (point - grid%origin)/grid%cell_size + 1.0_dp))
+      index3 = int(position)
+   end function cell_of
+
+   !> The number of the cell that holds a point, 0 if the point lies outside the grid.
+   pure integer function grid_cell(grid, point) result(c)
+      type(face_grid_t), intent(in) :: grid
+      real(dp), intent(in) :: point(3)
+      integer :: cell(3)
+      c = 0
+      if (.not. (all(point >= grid%origin) .and. all(point <= grid%origin + grid%n_cells*grid%cell_size))) return
+      cell = cell_of(grid, point)
+      c = cell(1) + grid%n_cells(1)*((cell(2) - 1) + grid%n_cells(2)*(cell(3) - 1))
+   end function grid_cell
+
+   !> Anchors of the reference configuration of a deformable pass: every slave node starts
+   !> with the closest point of its reference position on the nearest master face within the
+   !> search band (with smoothed normals the point along the smoothed normal where it lies on
+   !> the face), so that friction acts from the first increment and a body held sideways only
+   !> by friction is supported from the first iteration. Nodes with no face get no anchor.
+   subroutine initial_anchors(coords, edge_tolerance, pass)
+      real(dp), intent(in) :: coords(:, :)       !! reference coordinates (3, n_nodes)
+      real(dp), intent(in) :: edge_tolerance     !! the pair's, parent coordinates
+      type(contact_pass_t), intent(inout) :: pass
+      real(dp), allocatable :: zero(:)
+      real(dp) :: x_slave(3), xi(2), jacobian(2, 2)
+      logical :: fixed(2), converged
+      integer :: i, f
+      allocate (zero(size(coords)), source=0.0_dp)
+      call assign_faces(coords, zero, edge_tolerance, pass)
+      do i = 1, size(pass%slave_nodes)
+         f = pass%face(i)
+         if (f == 0) cycle
+         x_slave = coords(:, pass%slave_nodes(i))
+         call closest_point_in_face(coords(:, pass%faces(:, f)), x_slave, 0.0_dp, pass%anchor_xi(:, i), fixed)
+         if (pass%smooth) then
+            call smooth_projection(coords(:, pass%faces(:, f)), face_nodal_normals(coords, zero, pass, f), &
+                                   x_slave, xi, converged, jacobian)
+            if (converged) then
+               if (face_contains(xi, edge_tolerance)) pass%anchor_xi(:, i) = xi
+            end if
+         end if
+         pass%anchor_face(i) = f
+         pass%has_anchor(i) = .true.
+      end do
+   end subroutine initial_anchors
+
+   !> Anchors of the reference configuration against a rigid plane: every slave node's foot
+   !> point on the plane (so that friction acts from the first increment).
+   pure subroutine plane_anchors(coords, plane_point, plane_normal, pass)
+      real(dp), intent(in) :: coords(:, :)                   !! reference coordinates (3, n_nodes)
+      real(dp), intent(in) :: plane_point(3), plane_normal(3)  !! unit normal
+      type(contact_pass_t), intent(inout) :: pass
+      real(dp) :: x_slave(3)
+      integer :: i
+      do i = 1, size(pass%slave_nodes)
+         x_slave = coords(:, pass%slave_nodes(i))
+         pass%anchor_point(:, i) = x_slave - dot_product(x_slave - plane_point, plane_normal)*plane_normal
+      end do
+      pass%has_anchor = .true.
+   end subroutine plane_anchors
+
+   !> The averaged nodal normals of master face f's 4 nodes at displacements u (the kernel's
+   !> patch_normals over the face's patch).
+   pure function face_nodal_normals(coords, u, pass, f) result(nodal)
+      real(dp), intent(in) :: coords(:, :), u(:)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: f
+      real(dp) :: nodal(3, 4)
+      nodal = patch_normals(current_nodes(coords, u, pass%faces(:, f)), &
+                            current_nodes(coords, u, ring_nodes_of(pass%patches, f)), &
+                            patch_faces_of(pass%patches, f))
+   end function face_nodal_normals
+
+   !> Current coordinates X + u of nodes.
+   pure function current_nodes(coords, u, nodes) result(x)
+      real(dp), intent(in) :: coords(:, :), u(:)
+      integer, intent(in) :: nodes(:)
+      real(dp) :: x(3, size(nodes))
+      integer :: a
+      do a = 1, size(nodes)
+         x(:, a) = coords(:, nodes(a)) + u(3*nodes(a) - 2:3*nodes(a))
+      end do
+   end function current_nodes
+end module frix_contact_search

@@ -1,0 +1,197 @@
+!> Supports and loads of a deck: DIRICHLET CONDITIONS, NEUMANN CONDITIONS, BODY FORCE
+!> (docs/deck-format.md).
+module frix_deck_loads
+   use frix_kinds, only: dp
+   use frix_mesh, only: hex8_face_nodes
+   use frix_model, only: model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t
+   use frix_deck_context, only: deck_reader_t, require, mark_nodes, s_dirichlet, s_neumann, s_body_force
+   implicit none
+   private
+
+   public :: read_dirichlet, read_neumann, read_body_forces
+
+contains
+
+   !> `SET <name>|NODE <id> DOF f1 f2 f3 VAL v1 v2 v3 [CURVE c1 c2 c3]`.
+   subroutine read_dirichlet(reader, model)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(inout) :: model
+      type(dirichlet_t) :: record
+      integer, allocatable :: nodes(:)
+      integer :: i, k, position, flags(3), curves(3), flag_position
+      real(dp) :: values(3)
+      logical :: ok
+      allocate (model%dirichlet(0))
+      do i = reader%first(s_dirichlet), reader%last(s_dirichlet)
+         associate (line => reader%lines(i))
+            if (line%n_tokens() == 0) cycle
+            position = 1
+            ok = .true.
+            call reader%take_node_target(model, line, position, nodes, ok)
+            call reader%expect_keyword(line, position, 'DOF', ok)
+            flag_position = position
+            do k = 1, 3
+               call reader%take_integer(line, position, 'a DOF flag', flags(k), ok)
+               call require(reader, ok, flags(k) == 0 .or. flags(k) == 1, line, position - 1, &
+                            'DOF flag must be 0 or 1')
+            end do
+            call require(reader, ok, any(flags == 1), line, flag_position, 'no DOF flagged (all flags 0)')
+            call reader%expect_keyword(line, position, 'VAL', ok)
+            call reader%take_reals(line, position, 'a prescribed value', values, ok)
+            curves = 0
+            if (ok .and. position <= line%n_tokens()) then
+               call reader%expect_keyword(line, position, 'CURVE', ok)
+               do k = 1, 3
+                  call reader%take_curve(line, position, curves(k), ok)
+               end do
+            end if
+            if (ok .and. position <= line%n_tokens()) then
+               call reader%report(line, position, 'unexpected text')
+               ok = .false.
+            end if
+            if (.not. ok) cycle
+            do k = 1, 3
+               if (flags(k) == 0) cycle
+               record%nodes = nodes
+               record%component = k
+               record%value = values(k)
+               record%curve = curves(k)
+               record%line = line%number
+               model%dirichlet = [model%dirichlet, record]
+            end do
+            call mark_nodes(reader, nodes, i)
+         end associate
+      end do
+   end subroutine read_dirichlet
+
+   !> `SET <name>|NODE <id> FORCE fx fy fz [CURVE c]` or `SURF <name> PRESSURE p [CURVE c]
+   !> [FOLLOWER]`.
+   subroutine read_neumann(reader, model)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(inout) :: model
+      type(nodal_force_t) :: force
+      type(pressure_load_t) :: pressure
+      integer, allocatable :: nodes(:)
+      character(len=:), allocatable :: name
+      integer :: i, k, e, position, curve
+      real(dp) :: values(3)
+      logical :: ok
+      allocate (model%nodal_forces(0), model%pressures(0))
+      do i = reader%first(s_neumann), reader%last(s_neumann)
+         associate (line => reader%lines(i))
+            if (line%n_tokens() == 0) cycle
+            position = 1
+            ok = .true.
+            if (line%keyword(1) == 'SURF') then
+               position = 2
+               call reader%take_word(line, position, 'a surface name', name, ok)
+               if (ok) then
+                  pressure%surface = model%mesh%find_surface(name)
+                  if (pressure%surface == 0) then
+                     ok = .false.
+                     if (.not. reader%mesh_failed) call reader%report(line, 2, 'unknown surface')
+                  end if
+               end if
+               call reader%expect_keyword(line, position, 'PRESSURE', ok)
+               call reader%take_real(line, position, 'a pressure', pressure%value, ok)
+               pressure%curve = 0
+               pressure%follower = .false.
+               do while (ok .and. position <= line%n_tokens())
+                  select case (line%keyword(position))
+                  case ('CURVE')
+                     position = position + 1
+                     call reader%take_curve(line, position, pressure%curve, ok)
+                  case ('FOLLOWER')
+                     position = position + 1
+                     pressure%follower = .true.
+                  case default
+                     call reader%report(line, position, 'unknown keyword (expected CURVE or FOLLOWER)')
+                     ok = .false.
+                  end select
+               end do
+               if (.not. ok) cycle
+               model%pressures = [model%pressures, pressure]
+               associate (surface => model%mesh%surfaces(pressure%surface))
+                  do k = 1, size(surface%elements)
+                     e = surface%elements(k)
+                     call mark_nodes(reader, model%mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), e), i)
+                  end do
+               end associate
+               cycle
+            end if
+            call reader%take_node_target(model, line, position, nodes, ok)
+            call reader%expect_keyword(line, position, 'FORCE', ok)
+            call reader%take_reals(line, position, 'a force component', values, ok)
+            curve = 0
+            if (ok .and. position <= line%n_tokens()) then
+               call reader%expect_keyword(line, position, 'CURVE', ok)
+               call reader%take_curve(line, position, curve, ok)
+            end if
+            if (ok .and. position <= line%n_tokens()) then
+               call reader%report(line, position, 'unexpected text')
+               ok = .false.
+            end if
+            if (.not. ok) cycle
+            do k = 1, 3
+               if (values(k) == 0.0_dp) cycle
+               force%nodes = nodes
+               force%component = k
+               force%value = values(k)
+               force%curve = curve
+               model%nodal_forces = [model%nodal_forces, force]
+            end do
+            call mark_nodes(reader, nodes, i)
+         end associate
+      end do
+   end subroutine read_neumann
+
+   !> `SET <element set>|ALL GRAVITY gx gy gz [CURVE c]`.
+   subroutine read_body_forces(reader, model)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(inout) :: model
+      type(body_force_t) :: body_force
+      character(len=:), allocatable :: name
+      integer :: i, k, position, set
+      logical :: ok
+      allocate (model%body_forces(0))
+      do i = reader%first(s_body_force), reader%last(s_body_force)
+         associate (line => reader%lines(i))
+            if (line%n_tokens() == 0) cycle
+            position = 1
+            ok = .true.
+            select case (line%keyword(1))
+            case ('ALL')
+               position = 2
+               body_force%elements = [(k, k=1, model%mesh%n_elements)]
+            case ('SET')
+               position = 2
+               call reader%take_word(line, position, 'an element set name', name, ok)
+               if (ok) then
+                  set = model%mesh%find_element_set(name)
+                  if (set == 0) then
+                     ok = .false.
+                     if (.not. reader%mesh_failed) call reader%report(line, 2, 'unknown element set')
+                  else
+                     body_force%elements = model%mesh%element_sets(set)%elements
+                  end if
+               end if
+            case default
+               call reader%report(line, 1, 'expected SET <element set> or ALL')
+               ok = .false.
+            end select
+            call reader%expect_keyword(line, position, 'GRAVITY', ok)
+            call reader%take_reals(line, position, 'a gravity component', body_force%gravity, ok)
+            body_force%curve = 0
+            if (ok .and. position <= line%n_tokens()) then
+               call reader%expect_keyword(line, position, 'CURVE', ok)
+               call reader%take_curve(line, position, body_force%curve, ok)
+            end if
+            if (ok .and. position <= line%n_tokens()) then
+               call reader%report(line, position, 'unexpected text')
+               ok = .false.
+            end if
+            if (ok) model%body_forces = [model%body_forces, body_force]
+         end associate
+      end do
+   end subroutine read_body_forces
+end module frix_deck_loads

@@ -1,0 +1,191 @@
+!> The results of a committed increment, gathered once from the analysis state, the Newton
+!> loop's report and the contact system into an increment_results_t for the writers
+!> (frix_results_output). The stresses and strains come from one more element pass at the
+!> converged displacements, when the increment's fields are written (RESULTS EVERY, the last
+!> of a step). Every field is checked before any file receives it: the finite-value guard of
+!> the output (docs/solver.md, "Non-finite values").
+module frix_results_collection
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use frix_kinds, only: dp
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string, to_lower
+   use frix_finite_check, only: first_non_finite
+   use frix_model, only: model_t
+   use frix_analysis_state, only: analysis_state_t
+   use frix_newton_solver, only: newton_context_t, newton_report_t
+   use frix_assembler, only: assemble_internal
+   use frix_material, only: history_name_length
+   use frix_increment_results, only: increment_results_t, named_field_t, contact_pass_results_t
+   use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, &
+                                    get_contact_history
+   implicit none
+   private
+
+   public :: collect_results
+
+contains
+
+   !> `results` of converged increment `increment` of step `step` (committed in `state`).
+   subroutine collect_results(model, step, increment, state, context, report, results, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step, increment
+      type(analysis_state_t), intent(inout) :: state   !! (the element pass updates its iterate)
+      type(newton_context_t), intent(in) :: context
+      type(newton_report_t), intent(in) :: report
+      type(increment_results_t), intent(out) :: results
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n_nodes
+      logical :: last_of_step
+
+      n_nodes = model%mesh%n_nodes
+      results%step = step
+      results%increment = increment
+      results%time = state%time
+      results%iterations = report%iterations
+      results%iteration_log = transpose(reshape([report%residual_norms(0:report%iterations), &
+                                                 report%relative_norms(0:report%iterations), &
+                                                 report%energy_norms(0:report%iterations)], &
+                                                [report%iterations + 1, 3]))
+      results%displacement = reshape(state%u, [3, n_nodes])
+      results%reaction = reshape(context%reactions, [3, n_nodes])
+      results%constrained = reshape(context%fixed, [3, n_nodes])
+      call check_nodal_finite(model, results, 'displacement', state%u, error)
+      if (.not. allocated(error)) call check_nodal_finite(model, results, 'reaction', context%reactions, error)
+      if (allocated(error)) return
+      results%has_contact = context%has_contact
+      if (context%has_contact) then
+         call collect_contact(model, state, results, error)
+         if (allocated(error)) return
+      end if
+
+      last_of_step = abs(state%time - real(step, dp)) < 1.0e-12_dp
+      results%full = mod(increment, max(1, model%results%every)) == 0 .or. last_of_step
+      results%has_fields = results%full .and. (model%results%vtk .or. model%results%pos3d .or. model%results%hdf5)
+      if (results%has_fields) call collect_fields(model, state, results, error)
+   end subroutine collect_results
+
+   !> Stresses and strains at the integration points (one element pass), the materials'
+   !> named history variables, and the committed state for restarts.
+   subroutine collect_fields(model, state, results, error)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(inout) :: state
+      type(increment_results_t), intent(inout) :: results
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: fint(:)
+      allocate (results%stress(6, 8, model%mesh%n_elements), results%strain(6, 8, model%mesh%n_elements))
+      allocate (fint(3*model%mesh%n_nodes))
+      call assemble_internal(model, state, fint, error, gp_stress=results%stress, gp_strain=results%strain)
+      if (allocated(error)) return
+      call check_element_finite(model, results, 'stress', results%stress, error)
+      if (.not. allocated(error)) call check_element_finite(model, results, 'strain', results%strain, error)
+      if (allocated(error)) return
+      results%alpha = state%committed_alpha
+      results%history = state%committed_history
+      call collect_history_fields(model, state, results)
+   end subroutine collect_fields
+
+   !> One named field per distinct name of the materials' history_names: entry k of the
+   !> committed state of every element whose material names it so, zero elsewhere.
+   subroutine collect_history_fields(model, state, results)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(in) :: state
+      type(increment_results_t), intent(inout) :: results
+      character(len=history_name_length), allocatable :: names(:), all_names(:)
+      integer :: m, k, f, e
+      allocate (all_names(0))
+      do m = 1, size(model%materials)
+         call model%materials(m)%law%history_names(names)
+         do k = 1, size(names)
+            if (.not. any(all_names == names(k))) all_names = [all_names, names(k)]
+         end do
+      end do
+      allocate (results%point_fields(size(all_names)))
+      do f = 1, size(all_names)
+         results%point_fields(f)%name = trim(all_names(f))
+         allocate (results%point_fields(f)%values(size(state%committed_history, 2), model%mesh%n_elements), &
+                   source=0.0_dp)
+         do e = 1, model%mesh%n_elements
+            call model%materials(model%blocks(model%mesh%element_block(e))%material)%law%history_names(names)
+            do k = 1, size(names)
+               if (names(k) == all_names(f)) results%point_fields(f)%values(:, e) = state%committed_history(k, :, e)
+            end do
+         end do
+      end do
+   end subroutine collect_history_fields
+
+   !> The contact tables of every pass, the slip histories and the per-node contact fields.
+   subroutine collect_contact(model, state, results, error)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(in) :: state
+      type(increment_results_t), intent(inout) :: results
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, pair
+      allocate (results%contact(size(state%contact%passes)))
+      do p = 1, size(state%contact%passes)
+         associate (table => results%contact(p))
+            call contact_pass_table(state%contact, p, pair, table%nodes, table%values)
+            table%pair_id = model%contact_pairs(pair)%id
+            call get_contact_history(state%contact, p, table%history)
+            call check_contact_finite(model, results, table, error)
+            if (allocated(error)) return
+         end associate
+      end do
+      call contact_nodal_fields(state%contact, model%mesh%n_nodes, results%contact_pressure, &
+                                results%contact_traction, results%contact_gap, results%contact_status, &
+                                results%contact_slip)
+   end subroutine collect_contact
+
+   !> An error naming the node and direction of the first non-finite entry of a nodal field
+   !> (3 values per node), so that no result file receives NaN or an infinity.
+   subroutine check_nodal_finite(model, results, quantity, values, error)
+      type(model_t), intent(in) :: model
+      type(increment_results_t), intent(in) :: results
+      character(len=*), intent(in) :: quantity
+      real(dp), intent(in) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
+      integer :: k
+      k = first_non_finite(values)
+      if (k == 0) return
+      call fatal_error(error, not_written(results)//'the '//quantity//' at node '// &
+                       to_string(model%mesh%node_ids((k - 1)/3 + 1))//', direction '// &
+                       direction(mod(k - 1, 3) + 1)//' is not finite ('//to_string(values(k))//')')
+   end subroutine check_nodal_finite
+
+   !> check_nodal_finite for an integration-point field (6 components per point).
+   subroutine check_element_finite(model, results, quantity, values, error)
+      type(model_t), intent(in) :: model
+      type(increment_results_t), intent(in) :: results
+      character(len=*), intent(in) :: quantity
+      real(dp), intent(in) :: values(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: location(3)
+      if (all(ieee_is_finite(values))) return
+      location = findloc(ieee_is_finite(values), .false.)
+      call fatal_error(error, not_written(results)//'the '//quantity//' of element '// &
+                       to_string(model%mesh%element_ids(location(3)))//' is not finite')
+   end subroutine check_element_finite
+
+   !> check_nodal_finite for the contact table of one pass (gap, pressure, traction, slip).
+   subroutine check_contact_finite(model, results, table, error)
+      type(model_t), intent(in) :: model
+      type(increment_results_t), intent(in) :: results
+      type(contact_pass_results_t), intent(in) :: table
+      type(error_t), allocatable, intent(out) :: error
+      integer :: location(2)
+      if (all(ieee_is_finite(table%values))) return
+      location = findloc(ieee_is_finite(table%values), .false.)
+      call fatal_error(error, not_written(results)//'the contact '// &
+                       to_lower(trim(contact_table_labels(location(1))))//' at slave node '// &
+                       to_string(model%mesh%node_ids(table%nodes(location(2))))//' of pair '// &
+                       to_string(table%pair_id)//' is not finite')
+   end subroutine check_contact_finite
+
+   !> Start of the output guard's messages.
+   function not_written(results) result(text)
+      type(increment_results_t), intent(in) :: results
+      character(len=:), allocatable :: text
+      text = 'frix: step '//to_string(results%step)//' increment '//to_string(results%increment)// &
+             ' is not written: '
+   end function not_written
+end module frix_results_collection

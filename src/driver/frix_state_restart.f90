@@ -1,0 +1,48 @@
+!> The analysis state from the HDF5 file of an earlier run (docs/hdf5-layout.md, "Restart"):
+!> the committed displacements, EAS parameters and material history of one converged
+!> increment, and the committed slip history of every contact pass (`contact/pass<p>_history`).
+!> What is read here is what frix_results_collection puts into every increment's results.
+module frix_state_restart
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_strings, only: to_string
+   use frix_model, only: model_t
+   use frix_analysis_state, only: analysis_state_t, commit_state
+   use frix_hdf5_results, only: read_restart, read_increment_array
+   use frix_contact_assembly, only: get_contact_history, set_contact_history
+   implicit none
+   private
+
+   public :: read_state_restart
+
+contains
+
+   !> `state` committed at converged increment (step, increment) of the file at `path`, whose
+   !> pseudo time is returned in `time`.
+   subroutine read_state_restart(model, path, step, increment, state, time, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: step, increment
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(out) :: time
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: values(:, :)
+      integer :: p
+      time = 0.0_dp
+      call read_restart(path, step, increment, time, state%u, state%alpha, state%history, error, model%mesh)
+      if (allocated(error)) return
+      state%time = time
+      call commit_state(state)
+      if (.not. state%has_contact) return
+      ! the slip history replaces what commit_state made of the (not yet searched) passes
+      do p = 1, size(state%contact%passes)
+         call get_contact_history(state%contact, p, values)   ! for the shape
+         call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_history', values, error)
+         if (allocated(error)) then
+            error%message = 'contact pass '//to_string(p)//': '//error%message
+            return
+         end if
+         call set_contact_history(state%contact, p, values)
+      end do
+   end subroutine read_state_restart
+end module frix_state_restart

@@ -1,0 +1,160 @@
+!> Faces and smoothed-normal patches of a contact surface (frix_contact_patches). References:
+!> on the top surface of a 3 x 3 x 1 block of HEX8 the patch of a face is the 2 x 2, 2 x 3 or
+!> 3 x 3 block of faces around it (corner, edge, centre face), so its ring has 9 - 4 = 5,
+!> 12 - 4 = 8 or 16 - 4 = 12 nodes; every patch face, mapped back from local to mesh node
+!> numbers, is a surface face sharing a node with the face; a pinwheel of 8 faces around one
+!> node has 17 - 4 = 13 ring nodes per face, one more than the kernel takes.
+module test_contact_patches
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_testing, only: unittest_t, new_unittest, check, check_message_contains
+   use frix_strings, only: to_string
+   use frix_mesh, only: mesh_t, surface_t
+   use frix_face_projection, only: face_normal
+   use frix_contact_patches, only: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, &
+                                   check_patch_rings, ring_nodes_of, patch_faces_of
+   use test_contact_fixtures, only: grid_faces
+   implicit none
+   private
+
+   public :: collect_contact_patches
+
+contains
+
+   subroutine collect_contact_patches(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('surface faces: top faces of a block, outward normal', test_surface_faces), &
+               new_unittest('structured surface: ring sizes 5 / 8 / 12 and local patch faces', test_structured), &
+               new_unittest('largest ring: the centre face, within the kernel''s limit', test_largest_ring), &
+               new_unittest('pinwheel of 8 faces: 13 ring nodes, error', test_pinwheel)]
+   end subroutine collect_contact_patches
+
+   !> A 3 x 3 x 1 block of unit HEX8 (nodes 1 + i + 4 j + 16 k) and its top surface (face 2).
+   subroutine block_mesh(mesh, top)
+      type(mesh_t), intent(out) :: mesh
+      type(surface_t), intent(out) :: top
+      integer :: i, j, k, e, base
+      mesh%n_nodes = 32
+      mesh%n_elements = 9
+      allocate (mesh%coords(3, 32), mesh%connectivity(8, 9))
+      do k = 0, 1
+         do j = 0, 3
+            do i = 0, 3
+               mesh%coords(:, 1 + i + 4*j + 16*k) = real([i, j, k], dp)
+            end do
+         end do
+      end do
+      do j = 0, 2
+         do i = 0, 2
+            e = 1 + i + 3*j
+            base = 1 + i + 4*j
+            mesh%connectivity(1:4, e) = [base, base + 1, base + 5, base + 4]
+            mesh%connectivity(5:8, e) = mesh%connectivity(1:4, e) + 16
+         end do
+      end do
+      top%name = 'top'
+      top%elements = [(e, e=1, 9)]
+      allocate (top%faces(9), source=2)
+   end subroutine block_mesh
+
+   subroutine test_surface_faces(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      type(surface_t) :: top
+      integer, allocatable :: faces(:, :)
+      integer :: k
+      call block_mesh(mesh, top)
+      faces = surface_faces(mesh, top)
+      call check(error, all(faces == grid_faces(3) + 16), 'the top faces, counter-clockwise seen from +z')
+      if (allocated(error)) return
+      do k = 1, 9
+         call check(error, maxval(abs(face_normal(mesh%coords(:, faces(:, k)), [0.3_dp, -0.2_dp]) - &
+                                      [0.0_dp, 0.0_dp, 1.0_dp])) <= 1.0e-15_dp, 'outward normal +z, face '//to_string(k))
+         if (allocated(error)) return
+      end do
+   end subroutine test_surface_faces
+
+   subroutine test_structured(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(surface_patches_t) :: patches
+      integer :: faces(4, 9), f
+      integer, parameter :: ring_size(9) = [5, 8, 5, 8, 12, 8, 5, 8, 5], patch_size(9) = [4, 6, 4, 6, 9, 6, 4, 6, 4]
+      faces = grid_faces(3)
+      call surface_patches(16, faces, patches)
+      do f = 1, 9
+         call check(error, size(ring_nodes_of(patches, f)) == ring_size(f) .and. &
+                    size(patch_faces_of(patches, f), 2) == patch_size(f), &
+                    'face '//to_string(f)//': ring '//to_string(size(ring_nodes_of(patches, f)))// &
+                    ', patch '//to_string(size(patch_faces_of(patches, f), 2)))
+         if (allocated(error)) return
+         call check_patch(error, faces, f, ring_nodes_of(patches, f), patch_faces_of(patches, f))
+         if (allocated(error)) return
+      end do
+   end subroutine test_structured
+
+   !> Face f's ring holds no node of f, twice; mapped back to mesh numbers, the patch faces
+   !> are distinct surface faces that share a node with f, f itself as local [1, 2, 3, 4].
+   subroutine check_patch(error, faces, f, ring, local)
+      type(error_t), allocatable, intent(out) :: error
+      integer, intent(in) :: faces(:, :), f, ring(:), local(:, :)
+      integer, allocatable :: nodes(:), found(:)
+      integer :: g, k, b
+      allocate (nodes(4 + size(ring)), found(0))
+      nodes(:4) = faces(:, f)
+      nodes(5:) = ring
+      do k = 1, size(ring)
+         call check(error, all(faces(:, f) /= ring(k)) .and. count(ring == ring(k)) == 1, &
+                    'face '//to_string(f)//': ring node '//to_string(ring(k)))
+         if (allocated(error)) return
+      end do
+      do g = 1, size(local, 2)
+         k = 0
+         do b = 1, size(faces, 2)
+            if (all(faces(:, b) == nodes(local(:, g)))) k = b
+         end do
+         call check(error, k > 0 .and. all(found /= k) .and. any([(any(faces(:, f) == faces(b, k)), b=1, 4)]), &
+                    'face '//to_string(f)//': patch face '//to_string(g))
+         if (allocated(error)) return
+         found = [found, k]
+      end do
+      call check(error, any(found == f) .and. all(local(:, findloc(found, f, dim=1)) == [1, 2, 3, 4]), &
+                 'face '//to_string(f)//' in its own patch as [1, 2, 3, 4]')
+   end subroutine check_patch
+
+   subroutine test_largest_ring(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      type(surface_t) :: top
+      type(surface_patches_t) :: patches
+      integer :: n_ring, face_nodes(4)
+      call block_mesh(mesh, top)
+      call largest_patch_ring(mesh, top, n_ring, face_nodes)
+      call check(error, n_ring == 12 .and. all(face_nodes == [22, 23, 27, 26]), &
+                 'the centre face with 12 ring nodes, got '//to_string(n_ring))
+      if (allocated(error)) return
+      call surface_patches(mesh%n_nodes, surface_faces(mesh, top), patches)
+      call check_patch_rings(patches, error)
+   end subroutine test_largest_ring
+
+   subroutine test_pinwheel(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: ring_error
+      type(surface_patches_t) :: patches
+      integer :: faces(4, 8), k, f
+      ! node 1 in the centre, rim nodes 2..17; face k spans rim nodes 2k .. 2k + 2
+      do k = 1, 8
+         faces(:, k) = [1, 2*k, 2*k + 1, 2 + mod(2*k, 16)]
+      end do
+      call surface_patches(17, faces, patches)
+      do f = 1, 8
+         call check(error, size(ring_nodes_of(patches, f)) == 13 .and. size(patch_faces_of(patches, f), 2) == 8, &
+                    'face '//to_string(f)//': 13 ring nodes, 8 patch faces')
+         if (allocated(error)) return
+         call check_patch(error, faces, f, ring_nodes_of(patches, f), patch_faces_of(patches, f))
+         if (allocated(error)) return
+      end do
+      call check_patch_rings(patches, ring_error)
+      call check_message_contains(error, ring_error, &
+                                  'NORMALS Smoothed: a master face has 13 nodes around it, at most 12 are supported')
+   end subroutine test_pinwheel
+end module test_contact_patches

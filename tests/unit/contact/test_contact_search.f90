@@ -1,0 +1,220 @@
+!> The contact search (frix_contact_search). References: on the flat unit grid of 3 x 3 faces
+!> in z = 0 (face 1 + i + 3 j spans [i, i + 1] x [j, j + 1]) the nearest face of a node above
+!> the surface is the one under it, by hand; a node higher than the search band, or outside
+!> every face box, gets none; beyond the surface's free edge the nearest (clamped) face wins;
+!> on an edge shared by two faces the node keeps its face; moving the master by u moves the
+!> answer with it. On a wavy 10 x 10 surface the bucket grid gives the same faces as a
+!> brute-force search over all faces. With smoothed normals a node placed along the smoothed
+!> normal below a face point gets that face and, as initial anchor, that point.
+module test_contact_search
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_testing, only: unittest_t, new_unittest, check, check_close
+   use frix_strings, only: to_string
+   use frix_face_projection, only: closest_point_in_face, face_position, face_normal
+   use frix_contact_kernel, only: smooth_normal_at
+   use frix_contact_patches, only: surface_patches
+   use frix_contact_pass, only: contact_pass_t, start_pass_state
+   use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, face_nodal_normals
+   use test_contact_fixtures, only: grid_faces
+   implicit none
+   private
+
+   public :: collect_contact_search
+
+   real(dp), parameter :: band = 0.5_dp, edge_tolerance = 1.0e-6_dp
+
+contains
+
+   subroutine collect_contact_search(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('flat grid: face under the node, band, free edge, outside', test_flat), &
+               new_unittest('node on a shared edge keeps its current face', test_tie), &
+               new_unittest('displaced master: the face moves with u', test_displaced), &
+               new_unittest('wavy 10 x 10 surface: bucket grid = brute force', test_brute_force), &
+               new_unittest('initial anchors: closest point; no face, no anchor', test_anchors), &
+               new_unittest('smoothed normals: face and anchor of the normal projection', test_smoothed), &
+               new_unittest('rigid plane: the anchors are the foot points', test_plane)]
+   end subroutine collect_contact_search
+
+   !> A pass of slave points against the n x n faces of a grid of nodes 1 + i + (n + 1) j at
+   !> (i, j, height(i, j)); the slaves are nodes (n + 1)^2 + 1, ... of coords.
+   subroutine grid_pass(n, slaves, coords, pass, wavy)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: slaves(:, :)
+      real(dp), allocatable, intent(out) :: coords(:, :)
+      type(contact_pass_t), intent(out) :: pass
+      logical, intent(in) :: wavy   !! z = 0.15 (x - 1.5)^2 - 0.1 (y - 1.5)^2 + 0.05 x y (else 0)
+      integer :: i, j, n_grid
+      real(dp) :: x, y
+      n_grid = (n + 1)**2
+      allocate (coords(3, n_grid + size(slaves, 2)), source=0.0_dp)
+      do j = 0, n
+         do i = 0, n
+            x = real(i, dp)
+            y = real(j, dp)
+            coords(:, 1 + i + (n + 1)*j) = [x, y, 0.0_dp]
+            if (wavy) coords(3, 1 + i + (n + 1)*j) = 0.15_dp*(x - 1.5_dp)**2 - 0.1_dp*(y - 1.5_dp)**2 + 0.05_dp*x*y
+         end do
+      end do
+      coords(:, n_grid + 1:) = slaves
+      pass%faces = grid_faces(n)
+      pass%slave_nodes = [(n_grid + i, i=1, size(slaves, 2))]
+      pass%band = band
+      call start_pass_state(pass)
+   end subroutine grid_pass
+
+   subroutine test_flat(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :), zero(:)
+      type(contact_pass_t) :: pass
+      ! above face 5; slightly into face 7; above the band; beyond the free edge x = 3 next to
+      ! face 3; far outside
+      real(dp), parameter :: slaves(3, 5) = reshape([1.5_dp, 1.5_dp, 0.1_dp, 0.2_dp, 2.7_dp, -0.05_dp, &
+                                                     1.5_dp, 1.5_dp, 0.7_dp, 3.3_dp, 0.5_dp, 0.1_dp, &
+                                                     5.0_dp, 5.0_dp, 0.0_dp], [3, 5])
+      call grid_pass(3, slaves, coords, pass, .false.)
+      allocate (zero(size(coords)), source=0.0_dp)
+      call assign_faces(coords, zero, edge_tolerance, pass)
+      call check(error, all(pass%face == [5, 7, 0, 3, 0]), 'faces '//faces_text(pass%face))
+   end subroutine test_flat
+
+   subroutine test_tie(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :), zero(:)
+      type(contact_pass_t) :: pass
+      integer :: current
+      ! above the edge x = 1 shared by faces 4 and 5
+      call grid_pass(3, reshape([1.0_dp, 1.5_dp, 0.05_dp], [3, 1]), coords, pass, .false.)
+      allocate (zero(size(coords)), source=0.0_dp)
+      do current = 4, 5
+         pass%face = current
+         call assign_faces(coords, zero, edge_tolerance, pass)
+         call check(error, pass%face(1) == current, 'current face '//to_string(current)//', got '// &
+                    to_string(pass%face(1)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_tie
+
+   subroutine test_displaced(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :), u(:)
+      type(contact_pass_t) :: pass
+      integer :: node
+      call grid_pass(3, reshape([1.5_dp, 1.5_dp, 0.1_dp], [3, 1]), coords, pass, .false.)
+      allocate (u(size(coords)), source=0.0_dp)
+      do node = 1, 16
+         u(3*node - 2) = 1.0_dp   ! the master moves by +1 along x: face 4 comes under the node
+      end do
+      call assign_faces(coords, u, edge_tolerance, pass)
+      call check(error, pass%face(1) == 4, 'face 4, got '//to_string(pass%face(1)))
+   end subroutine test_displaced
+
+   subroutine test_brute_force(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: n = 10, n_slaves = 400
+      real(dp), allocatable :: coords(:, :), zero(:)
+      real(dp) :: slaves(3, n_slaves), x_face(3, 4), xi(2), closest(3), distance, best
+      type(contact_pass_t) :: pass
+      logical :: fixed(2)
+      integer :: i, f, expected, node
+      do i = 1, n_slaves
+         ! quasi-random points (golden-ratio sequences) over and beyond the surface
+         slaves(:, i) = [-0.5_dp + 11.0_dp*frac(0.6180339887_dp*i), -0.5_dp + 11.0_dp*frac(0.7548776662_dp*i), &
+                         -1.0_dp + 2.0_dp*frac(0.5698402910_dp*i)]
+      end do
+      call grid_pass(n, slaves, coords, pass, .false.)
+      coords(3, :(n + 1)**2) = 0.3_dp*sin(coords(1, :(n + 1)**2))*cos(0.7_dp*coords(2, :(n + 1)**2))
+      allocate (zero(size(coords)), source=0.0_dp)
+      call assign_faces(coords, zero, edge_tolerance, pass)
+      do i = 1, n_slaves
+         node = pass%slave_nodes(i)
+         expected = 0
+         best = huge(1.0_dp)
+         do f = 1, n*n
+            x_face = coords(:, pass%faces(:, f))
+            if (any(coords(:, node) < minval(x_face, dim=2) - band) .or. &
+                any(coords(:, node) > maxval(x_face, dim=2) + band)) cycle
+            call closest_point_in_face(x_face, coords(:, node), 0.0_dp, xi, fixed)
+            closest = face_position(x_face, xi)
+            if (dot_product(coords(:, node) - closest, face_normal(x_face, xi)) > band) cycle
+            distance = norm2(coords(:, node) - closest)
+            if (distance < best) then
+               best = distance
+               expected = f
+            end if
+         end do
+         call check(error, pass%face(i) == expected, 'slave '//to_string(i)//': face '//to_string(pass%face(i))// &
+                    ', brute force '//to_string(expected))
+         if (allocated(error)) return
+      end do
+      call check(error, count(pass%face > 0) > n_slaves/2 .and. count(pass%face == 0) > 0, &
+                 'both nodes with and without a face: '//to_string(count(pass%face > 0)))
+   contains
+      pure real(dp) function frac(x)
+         real(dp), intent(in) :: x
+         frac = x - aint(x)
+      end function frac
+   end subroutine test_brute_force
+
+   subroutine test_anchors(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :)
+      type(contact_pass_t) :: pass
+      call grid_pass(3, reshape([1.25_dp, 1.75_dp, 0.1_dp, 1.25_dp, 1.75_dp, 5.0_dp], [3, 2]), coords, pass, .false.)
+      call initial_anchors(coords, edge_tolerance, pass)
+      ! face 5 spans [1, 2]^2: xi = 2 (x - 1.5, y - 1.5)
+      call check(error, pass%has_anchor(1) .and. pass%anchor_face(1) == 5 .and. &
+                 maxval(abs(pass%anchor_xi(:, 1) - [-0.5_dp, 0.5_dp])) <= 1.0e-14_dp, 'anchor of slave 1')
+      if (allocated(error)) return
+      call check(error, .not. pass%has_anchor(2) .and. pass%anchor_face(2) == 0, 'slave 2 above the band: no anchor')
+   end subroutine test_anchors
+
+   subroutine test_smoothed(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :), zero(:)
+      type(contact_pass_t) :: pass
+      real(dp), parameter :: xi(2) = [0.9_dp, -0.2_dp], depth = 0.05_dp
+      call grid_pass(3, reshape([0.0_dp, 0.0_dp, 0.0_dp], [3, 1]), coords, pass, .true.)
+      call surface_patches(size(coords, 2), pass%faces, pass%patches)
+      pass%smooth = .true.
+      allocate (zero(size(coords)), source=0.0_dp)
+      ! below the point xi of the centre face 5, along the smoothed normal there
+      coords(:, pass%slave_nodes(1)) = face_position(coords(:, pass%faces(:, 5)), xi) - &
+                                       depth*smooth_normal_at(face_nodal_normals(coords, zero, pass, 5), xi)
+      call initial_anchors(coords, edge_tolerance, pass)
+      call check(error, pass%face(1) == 5 .and. pass%anchor_face(1) == 5, 'face 5, got '//to_string(pass%face(1)))
+      if (allocated(error)) return
+      call check_close(error, pass%anchor_xi(1, 1), xi(1), 0.0_dp, 1.0e-10_dp, 'anchor xi1')
+      if (allocated(error)) return
+      call check_close(error, pass%anchor_xi(2, 1), xi(2), 0.0_dp, 1.0e-10_dp, 'anchor xi2')
+   end subroutine test_smoothed
+
+   subroutine test_plane(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :)
+      type(contact_pass_t) :: pass
+      real(dp), parameter :: point(3) = [0.0_dp, 0.0_dp, 1.0_dp], normal(3) = [0.0_dp, 0.6_dp, 0.8_dp]
+      real(dp) :: offset(3)
+      integer :: i
+      call grid_pass(1, reshape([0.3_dp, -0.4_dp, 2.0_dp, 1.0_dp, 2.0_dp, -0.5_dp], [3, 2]), coords, pass, .false.)
+      call plane_anchors(coords, point, normal, pass)
+      do i = 1, 2
+         ! on the plane, and the slave minus its foot along the normal
+         offset = coords(:, pass%slave_nodes(i)) - pass%anchor_point(:, i)
+         call check(error, pass%has_anchor(i) .and. abs(dot_product(pass%anchor_point(:, i) - point, normal)) <= 1.0e-15_dp &
+                    .and. norm2(offset - dot_product(offset, normal)*normal) <= 1.0e-15_dp, 'foot point of slave '//to_string(i))
+         if (allocated(error)) return
+      end do
+   end subroutine test_plane
+
+   pure function faces_text(faces) result(text)
+      integer, intent(in) :: faces(:)
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ''
+      do i = 1, size(faces)
+         text = text//' '//to_string(faces(i))
+      end do
+   end function faces_text
+end module test_contact_search
