@@ -237,9 +237,14 @@ contains
                call kernel_nodes(pass, i, nodes, n_nodes, first_ring)
                n = 3*n_nodes
                x_face = current_nodes(model%mesh%coords, u, nodes(2:5))
-               if (first_ring == 10) x_anchor_face = current_nodes(model%mesh%coords, u, nodes(6:9))
+               ! allocated here (their allocation tells the kernel they are present), then filled
+               if (first_ring == 10) then
+                  allocate (x_anchor_face(3, 4))
+                  x_anchor_face(:, :) = current_nodes(model%mesh%coords, u, nodes(6:9))
+               end if
                if (pass%smooth) then
-                  x_ring = current_nodes(model%mesh%coords, u, nodes(first_ring:n_nodes))
+                  allocate (x_ring(3, n_nodes - first_ring + 1))
+                  x_ring(:, :) = current_nodes(model%mesh%coords, u, nodes(first_ring:n_nodes))
                   patch = patch_faces_of(pass%patches, pass%face(i))
                end if
                do attempt = 1, 2

@@ -235,7 +235,7 @@ contains
       do f = 1, size(results%point_fields)
          call recovered_field(model, results%point_fields(f), nodal, cell, error)
          if (allocated(error)) return
-         names = [names, [character(len=16) :: to_upper(results%point_fields(f)%name)]]
+         names = [character(len=16) :: names, to_upper(results%point_fields(f)%name)]
          allocate (grown(size(names), n_nodes))
          grown(:size(names) - 1, :) = scalars
          grown(size(names), :) = nodal(1, :)
