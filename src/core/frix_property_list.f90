@@ -102,8 +102,11 @@ contains
       list%owner = self%owner
       allocate (list%names(0), list%values(0))
       do i = 1, size(specs)
-         j = 0
-         if (self%count() > 0) j = findloc(self%names, specs(i)%name, dim=1, back=.true.)
+         ! the last value given wins (a loop: gfortran 12's findloc with back= reads before
+         ! a character array)
+         do j = self%count(), 1, -1
+            if (self%names(j) == specs(i)%name) exit
+         end do
          if (j > 0) then
             call list%add(specs(i)%name, self%values(j))
          else if (specs(i)%has_default) then
