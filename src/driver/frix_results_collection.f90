@@ -91,6 +91,7 @@ contains
       type(analysis_state_t), intent(in) :: state
       type(increment_results_t), intent(inout) :: results
       character(len=history_name_length), allocatable :: names(:), all_names(:)
+      integer, allocatable :: entry(:, :)   !! (field, material): the state entry named so, 0 if none
       integer :: m, k, f, e
       allocate (all_names(0))
       do m = 1, size(model%materials)
@@ -99,16 +100,21 @@ contains
             if (.not. any(all_names == names(k))) all_names = [all_names, names(k)]
          end do
       end do
+      allocate (entry(size(all_names), size(model%materials)), source=0)
+      do m = 1, size(model%materials)
+         call model%materials(m)%law%history_names(names)
+         do k = 1, size(names)
+            entry(findloc(all_names, names(k), dim=1), m) = k
+         end do
+      end do
       allocate (results%point_fields(size(all_names)))
       do f = 1, size(all_names)
          results%point_fields(f)%name = trim(all_names(f))
          allocate (results%point_fields(f)%values(size(state%committed_history, 2), model%mesh%n_elements), &
                    source=0.0_dp)
          do e = 1, model%mesh%n_elements
-            call model%materials(model%blocks(model%mesh%element_block(e))%material)%law%history_names(names)
-            do k = 1, size(names)
-               if (names(k) == all_names(f)) results%point_fields(f)%values(:, e) = state%committed_history(k, :, e)
-            end do
+            k = entry(f, model%blocks(model%mesh%element_block(e))%material)
+            if (k > 0) results%point_fields(f)%values(:, e) = state%committed_history(k, :, e)
          end do
       end do
    end subroutine collect_history_fields
