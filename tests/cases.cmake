@@ -108,6 +108,10 @@ set_tests_properties(hdf5_h5py_layout PROPERTIES LABELS unit)
 add_test(NAME restart_beam COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_beam.dck)
 set_tests_properties(restart_beam PROPERTIES LABELS regression)
+# In the plastic range: restarted at the first yield (1.3) and in plastic loading (2.2).
+add_test(NAME restart_plastic COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_plastic.dck 1.3 2.2)
+set_tests_properties(restart_plastic PROPERTIES LABELS "regression;plasticity")
 
 # Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
 foreach(script plot_history plot_line render_mesh mohr_coulomb)

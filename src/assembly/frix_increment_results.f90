@@ -35,6 +35,9 @@ module frix_increment_results
       real(dp), allocatable :: displacement(:, :)   !! (3, n_nodes)
       real(dp), allocatable :: reaction(:, :)       !! (3, n_nodes), zero on free equations
       logical, allocatable :: constrained(:, :)     !! (3, n_nodes) equations with a Dirichlet condition
+      !> integration points whose law flags them as yielding in this increment (history
+      !> variable YIELDED = 1); -1 when no material of the model has such a variable
+      integer :: yielding_points = -1
       !> whether the increment is written in full: listing, VTK, POS3D, HDF5 (RESULTS EVERY,
       !> and the last increment of every step); the CSV files receive every increment
       logical :: full = .false.

@@ -52,6 +52,7 @@ contains
       call check_nodal_finite(model, results, 'displacement', state%u, error)
       if (.not. allocated(error)) call check_nodal_finite(model, results, 'reaction', context%reactions, error)
       if (allocated(error)) return
+      results%yielding_points = yielding_points(model, state)
       results%has_contact = context%has_contact
       if (context%has_contact) then
          call collect_contact(model, state, results, error)
@@ -83,6 +84,29 @@ contains
       results%history = state%committed_history
       call collect_history_fields(model, state, results)
    end subroutine collect_fields
+
+   !> The number of integration points with history variable YIELDED = 1 in the committed
+   !> state; -1 if no material names a variable YIELDED.
+   integer function yielding_points(model, state)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(in) :: state
+      character(len=history_name_length), allocatable :: names(:)
+      integer :: entry(size(model%materials)), m, k, e
+      entry = 0
+      do m = 1, size(model%materials)
+         call model%materials(m)%law%history_names(names)
+         do k = 1, size(names)
+            if (names(k) == 'YIELDED') entry(m) = k
+         end do
+      end do
+      yielding_points = -1
+      if (all(entry == 0)) return
+      yielding_points = 0
+      do e = 1, model%mesh%n_elements
+         k = entry(model%blocks(model%mesh%element_block(e))%material)
+         if (k > 0) yielding_points = yielding_points + count(state%committed_history(k, :, e) > 0.5_dp)
+      end do
+   end function yielding_points
 
    !> One named field per distinct name of the materials' history_names: entry k of the
    !> committed state of every element whose material names it so, zero elsewhere.

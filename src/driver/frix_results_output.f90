@@ -133,6 +133,10 @@ contains
       call self%listing%write_increment_header(results%step, results%increment, results%time, results%iterations, &
                                                error)
       if (allocated(error)) return
+      if (results%yielding_points >= 0) then
+         call self%listing%write_count('YIELDING POINTS', results%yielding_points, error)
+         if (allocated(error)) return
+      end if
       call self%listing%write_iteration_log([character(len=17) :: 'RESIDUAL_NORM', 'RELATIVE_NORM', 'ENERGY_NORM'], &
                                             results%iteration_log, error)
       if (allocated(error)) return

@@ -191,12 +191,13 @@ contains
       if (n > 0) then
          call enhanced_operators(self%name, coords, volume, n, enhanced, error)
          if (allocated(error)) return
-         call solve_enhanced(self%name, material, n, enhanced, volume, compatible, state_old, &
-                             state_new, alpha(1:n), total, pk2, moduli, error)
+         call solve_enhanced(self%name, material, total_lagrangian, n, enhanced, volume, compatible, &
+                             state_old, state_new, alpha(1:n), total, pk2, moduli, error)
          if (allocated(error)) return
       else
          total = compatible
-         call material_pass(self%name, material, total, state_old, state_new, pk2, moduli, error)
+         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, &
+                            moduli, error)
          if (allocated(error)) return
       end if
 
@@ -312,9 +313,10 @@ contains
    end subroutine enhanced_operators
 
    !> Stress and tangent at all points for the given total strains.
-   subroutine material_pass(name, material, total, state_old, state_new, pk2, moduli, error)
+   subroutine material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
+      logical, intent(in) :: finite   !! total Lagrangian: total = E, pk2 = S
       real(dp), intent(in) :: total(6, 8)
       real(dp), intent(in) :: state_old(:, :)
       real(dp), intent(inout) :: state_new(:, :)
@@ -323,7 +325,7 @@ contains
       type(error_t), allocatable :: material_error
       integer :: g
       do g = 1, 8
-         call material%response(total(:, g), state_old(:, g), state_new(:, g), pk2(:, g), &
+         call material%response(total(:, g), finite, state_old(:, g), state_new(:, g), pk2(:, g), &
                                 moduli(:, :, g), material_error)
          if (allocated(material_error)) then
             call fatal_error(error, name//', integration point '//to_string(g)//': '// &
@@ -338,10 +340,11 @@ contains
    !> max_k sum_g |G_g|^T |S_g| dV_g, or when |h| stops decreasing at round-off level (see
    !> plateau_tolerance); fails after max_local_iterations
    !> steps. On return stresses, tangents and history belong to the converged alpha.
-   subroutine solve_enhanced(name, material, n, enhanced, volume, compatible, state_old, state_new, &
-                             alpha, total, pk2, moduli, error)
+   subroutine solve_enhanced(name, material, finite, n, enhanced, volume, compatible, state_old, &
+                             state_new, alpha, total, pk2, moduli, error)
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
+      logical, intent(in) :: finite   !! total Lagrangian: total = E, pk2 = S
       integer, intent(in) :: n
       real(dp), intent(in) :: enhanced(:, :, :)
       real(dp), intent(in) :: volume(8), compatible(6, 8)
@@ -360,7 +363,7 @@ contains
          do g = 1, 8
             total(:, g) = compatible(:, g) + matmul(enhanced(:, 1:n, g), alpha(1:n))
          end do
-         call material_pass(name, material, total, state_old, state_new, pk2, moduli, error)
+         call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
          if (allocated(error)) return
          residual(1:n) = 0.0_dp
          scale(1:n) = 0.0_dp

@@ -35,6 +35,7 @@ module frix_listing_writer
       procedure :: write_comment
       procedure :: write_increment_header
       procedure :: write_iteration_log
+      procedure :: write_count
       procedure :: write_displacements
       procedure :: write_reactions
       procedure :: write_table
@@ -102,6 +103,17 @@ contains
          '  TIME', time, '  ITERATIONS', iterations
       call write_lines(self, [line], error)
    end subroutine write_increment_header
+
+   !> A one-line block `<title> <i10>`, e.g. `YIELDING POINTS         12`.
+   subroutine write_count(self, title, count, error)
+      class(listing_t), intent(inout) :: self
+      character(len=*), intent(in) :: title
+      integer, intent(in) :: count
+      type(error_t), allocatable, intent(out) :: error
+      character(len=80) :: line
+      write (line, '(a,i10)') title, count
+      call write_lines(self, [line], error)
+   end subroutine write_count
 
    !> `ITERATION LOG` table: one row per Newton iteration (key ITER = 1, 2, ...), one column
    !> per norm named in `labels` (e.g. RESIDUAL_NORM, ENERGY_NORM), values(n_labels, n_iterations).

@@ -54,14 +54,21 @@ contains
 
    !> The properties of every elastic law: YOUNG (required, > 0), NUE (required,
    !> -1 < NUE < 0.5), DENS (optional, >= 0, default 0; mass per unit reference volume).
-   subroutine elastic_constants(properties, young, poisson, density, error)
+   !> A law with further properties names them in `other_names`; any other name is reported.
+   subroutine elastic_constants(properties, young, poisson, density, error, other_names)
       type(property_list_t), intent(in) :: properties
       real(dp), intent(out) :: young, poisson, density
       type(error_t), allocatable, intent(inout) :: error
+      character(len=*), intent(in), optional :: other_names(:)  !! upper case
       logical :: has_young, has_poisson, has_density
       character(len=:), allocatable :: law
       law = trim(properties%owner)
-      call properties%check_names([character(len=8) :: 'YOUNG', 'NUE', 'DENS'], error)
+      if (present(other_names)) then
+         call properties%check_names([character(len=max(8, len(other_names))) :: 'YOUNG', 'NUE', 'DENS', &
+                                      other_names], error)
+      else
+         call properties%check_names([character(len=8) :: 'YOUNG', 'NUE', 'DENS'], error)
+      end if
       call properties%take_real('YOUNG', young, has_young, error)
       call properties%take_real('NUE', poisson, has_poisson, error)
       call properties%take_real('DENS', density, has_density, error, default=0.0_dp)
@@ -107,9 +114,10 @@ contains
    end function linear_elastic_n_state
 
    !> stress = D strain; tangent = D. Never fails; the history arrays are empty and untouched.
-   subroutine linear_elastic_response(self, strain, state_old, state_new, stress, tangent, error)
+   subroutine linear_elastic_response(self, strain, finite, state_old, state_new, stress, tangent, error)
       class(linear_elastic_t), intent(in) :: self
       real(dp), intent(in) :: strain(6)        !! eps or E, Voigt, engineering shears
+      logical, intent(in) :: finite            !! unused: the same law under both kinematics
       real(dp), intent(in) :: state_old(:)     !! unused (no history)
       real(dp), intent(inout) :: state_new(:)  !! unused (no history)
       real(dp), intent(out) :: stress(6)       !! sigma or S, Voigt, tensor shears

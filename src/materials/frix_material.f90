@@ -7,6 +7,11 @@
 !> Under small strain the strain is the linearised strain eps and the stress the Cauchy
 !> stress; under total Lagrangian kinematics the strain is the Green-Lagrange strain E and
 !> the stress the second Piola-Kirchhoff stress S. In both cases tangent = d stress / d strain.
+!> The element tells the law which (`finite`): hyperelastic laws are the same function either
+!> way, but an inelastic law is not (von Mises plasticity returns in the logarithmic strain
+!> 1/2 ln C under finite strain, in eps under small strain; docs/materials.md). The law needs C
+!> only, C = I + 2 E, not the deformation gradient: every law is frame-indifferent and
+!> isotropic, so E carries all it uses.
 module frix_material
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -44,10 +49,11 @@ module frix_material
          integer :: n
       end function n_state_interface
 
-      subroutine response_interface(self, strain, state_old, state_new, stress, tangent, error)
+      subroutine response_interface(self, strain, finite, state_old, state_new, stress, tangent, error)
          import :: material_t, dp, error_t
          class(material_t), intent(in) :: self
          real(dp), intent(in) :: strain(6)        !! eps (small strain) or E (Green-Lagrange), Voigt
+         logical, intent(in) :: finite            !! .true.: total Lagrangian (strain is E, stress S)
          real(dp), intent(in) :: state_old(:)     !! history at the start of the increment
          real(dp), intent(inout) :: state_new(:)  !! history at the end (written)
          real(dp), intent(out) :: stress(6)       !! sigma (small strain) or S (2nd Piola-Kirchhoff)

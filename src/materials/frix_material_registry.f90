@@ -8,8 +8,8 @@
 !>   MAT_Struct_NeoHooke           compressible neo-Hookean (frix_neo_hookean)
 !> each with YOUNG (required, > 0), NUE (required, -1 < NUE < 0.5), DENS (optional, >= 0,
 !> default 0; mass per unit reference volume).
-!> MAT_3DMisesPlastic (deck keyword of the CARAT family, properties YOUNG NUE SIGY HARD) is
-!> recognised but not implemented yet: it returns an error saying so.
+!>   MAT_3DMisesPlastic            von Mises plasticity (frix_von_mises_plastic): also SIGY,
+!>                                 HARD, SIGINF, DELTA, EPSPk/SIGYk, KINH (docs/materials.md)
 module frix_material_registry
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -19,15 +19,13 @@ module frix_material_registry
    use frix_linear_elastic, only: linear_elastic_from_properties
    use frix_saint_venant_kirchhoff, only: saint_venant_kirchhoff_from_properties
    use frix_neo_hookean, only: neo_hookean_from_properties
+   use frix_von_mises_plastic, only: von_mises_from_properties
    implicit none
    private
 
    public :: create_material, material_keywords, keyword_length
 
    integer, parameter :: keyword_length = 32  !! length of the names returned by material_keywords
-
-   !> Laws known from the CARAT family but not implemented yet.
-   character(len=*), parameter :: plasticity_keyword = 'MAT_3DMisesPlastic'
 
    abstract interface
       !> A law's constructor from its deck properties (owner: the law's keyword).
@@ -55,7 +53,8 @@ contains
       type(material_entry_t), allocatable :: table(:)
       table = [material_entry_t('MAT_Struct_LinearElastic', linear_elastic_from_properties), &
                material_entry_t('MAT_Struct_StVenantKirchhoff', saint_venant_kirchhoff_from_properties), &
-               material_entry_t('MAT_Struct_NeoHooke', neo_hookean_from_properties)]
+               material_entry_t('MAT_Struct_NeoHooke', neo_hookean_from_properties), &
+               material_entry_t('MAT_3DMisesPlastic', von_mises_from_properties)]
    end function material_table
 
    !> Names of the implemented material laws, in the spelling of the documentation.
@@ -83,8 +82,6 @@ contains
          named = properties
          named%owner = trim(table(i)%keyword)
          call table(i)%create(named, material, error)
-      else if (to_upper(trim(adjustl(keyword))) == to_upper(plasticity_keyword)) then
-         call fatal_error(error, plasticity_keyword//': plasticity is not implemented yet')
       else
          call fatal_error(error, 'unknown material law "'//trim(adjustl(keyword))// &
                           '"; valid laws: '//joined(table%keyword))

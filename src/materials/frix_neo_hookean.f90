@@ -76,9 +76,10 @@ contains
 
    !> Second Piola-Kirchhoff stress and tangent dS/dE for a Green-Lagrange strain E.
    !> Fails if det C <= 0 (inverted or degenerate deformation).
-   subroutine neo_hookean_response(self, strain, state_old, state_new, stress, tangent, error)
+   subroutine neo_hookean_response(self, strain, finite, state_old, state_new, stress, tangent, error)
       class(neo_hookean_t), intent(in) :: self
       real(dp), intent(in) :: strain(6)        !! Green-Lagrange E, Voigt, engineering shears
+      logical, intent(in) :: finite            !! unused: the same law under both kinematics
       real(dp), intent(in) :: state_old(:)     !! unused (no history)
       real(dp), intent(inout) :: state_new(:)  !! unused (no history)
       real(dp), intent(out) :: stress(6)       !! S, Voigt, tensor shears

@@ -67,3 +67,16 @@ foreach(mesh 40 80)
                    --check u1_n${tip} -0.01 0.55500 0.001 "k = 10, u/L")
   set_tests_properties(v3_cantilever_k1_${mesh} v3_cantilever_k10_${mesh} PROPERTIES LABELS regression)
 endforeach()
+
+# V4a/b uniaxial plastic bar (one HEX8, homogeneous): the end reaction against the closed form
+# of uniaxial stress with linear hardening, small strain and total Lagrangian (log strain),
+# stated in the decks' headers; the discretisation is exact, so the tolerance is round-off.
+add_test(NAME v4_bar_small_strain
+         COMMAND bash ${VERIFICATION_DIR}/run_case.sh ${FRIX_BIN}
+                 ${VERIFICATION_INPUTS}/v4_plasticity/bar_small_strain.dck
+                 --check r1_n2 1 215.5263157894737 1e-10 "R_x per node vs sigma_y + Et (eps - eps_y)")
+add_test(NAME v4_bar_finite_strain
+         COMMAND bash ${VERIFICATION_DIR}/run_case.sh ${FRIX_BIN}
+                 ${VERIFICATION_INPUTS}/v4_plasticity/bar_finite_strain.dck
+                 --check r1_n2 1 2163.570555193556 1e-10 "R_x per node vs tau(ln 1.2) / 1.2")
+set_tests_properties(v4_bar_small_strain v4_bar_finite_strain PROPERTIES LABELS "regression;plasticity")

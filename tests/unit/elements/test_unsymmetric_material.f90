@@ -43,9 +43,10 @@ contains
       n_state = 0
    end function n_state
 
-   subroutine response(self, strain, state_old, state_new, stress, tangent, error)
+   subroutine response(self, strain, finite, state_old, state_new, stress, tangent, error)
       class(unsymmetric_elastic_t), intent(in) :: self
       real(dp), intent(in) :: strain(6)
+      logical, intent(in) :: finite            !! unused: the same law under both kinematics
       real(dp), intent(in) :: state_old(:)
       real(dp), intent(inout) :: state_new(:)
       real(dp), intent(out) :: stress(6)

@@ -32,39 +32,58 @@ contains
       end do
    end subroutine check_matrix_close
 
-   !> Stress and tangent of a history-free material; error if the law fails.
-   subroutine material_response(error, material, strain, stress, tangent)
+   !> Stress and tangent of a material at `strain` from the history `state_old` (default: none,
+   !> or zeros of the law's size) under small (default) or finite strain; error if the law fails.
+   subroutine material_response(error, material, strain, stress, tangent, finite, state_old, state_new)
       type(error_t), allocatable, intent(out) :: error
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: strain(6)
       real(dp), intent(out) :: stress(6), tangent(6, 6)
-      real(dp) :: state_old(0), state_new(0)
+      logical, intent(in), optional :: finite
+      real(dp), intent(in), optional :: state_old(:)
+      real(dp), intent(out), optional :: state_new(:)
+      real(dp) :: old(material%n_state()), new(material%n_state())
       type(error_t), allocatable :: law_error
-      call material%response(strain, state_old, state_new, stress, tangent, law_error)
+      old = 0.0_dp
+      if (present(state_old)) old = state_old
+      new = 0.0_dp
+      call material%response(strain, optional_true(finite), old, new, stress, tangent, law_error)
       if (allocated(law_error)) call fatal_error(error, 'response failed: '//law_error%message)
+      if (present(state_new)) state_new = new
    end subroutine material_response
+
+   pure logical function optional_true(flag)
+      logical, intent(in), optional :: flag
+      optional_true = .false.
+      if (present(flag)) optional_true = flag
+   end function optional_true
 
    !> Column j of the tangent vs (S(E + h e_j) - S(E - h e_j)) / (2 h), h = 1e-7 max(1, |E_j|).
    !> Truncation error O(h^2) ~ 1e-14 relative; round-off ~ 1e-16 / h ~ 1e-9 relative.
-   subroutine check_tangent_by_differences(error, material, strain, rel_tol, message)
+   subroutine check_tangent_by_differences(error, material, strain, rel_tol, message, finite, state_old)
       type(error_t), allocatable, intent(out) :: error
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: strain(6)
       real(dp), intent(in) :: rel_tol
       character(len=*), intent(in) :: message
+      logical, intent(in), optional :: finite      !! default: small strain
+      real(dp), intent(in), optional :: state_old(:)  !! default: zero history
       real(dp) :: stress(6), tangent(6, 6), differences(6, 6)
       real(dp) :: stress_plus(6), stress_minus(6), unused(6, 6), perturbed(6), step
+      real(dp) :: old(material%n_state())
       integer :: j
-      call material_response(error, material, strain, stress, tangent)
+      old = 0.0_dp
+      if (present(state_old)) old = state_old
+      call material_response(error, material, strain, stress, tangent, finite, old)
       if (allocated(error)) return
       do j = 1, 6
          step = 1.0e-7_dp*max(1.0_dp, abs(strain(j)))
          perturbed = strain
          perturbed(j) = strain(j) + step
-         call material_response(error, material, perturbed, stress_plus, unused)
+         call material_response(error, material, perturbed, stress_plus, unused, finite, old)
          if (allocated(error)) return
          perturbed(j) = strain(j) - step
-         call material_response(error, material, perturbed, stress_minus, unused)
+         call material_response(error, material, perturbed, stress_minus, unused, finite, old)
          if (allocated(error)) return
          differences(:, j) = (stress_plus - stress_minus)/(2.0_dp*step)
       end do

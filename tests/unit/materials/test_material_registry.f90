@@ -27,7 +27,7 @@ contains
                new_unittest('every listed keyword creates its law', test_keywords_round_trip), &
                new_unittest('DENS defaults to 0', test_default_density), &
                new_unittest('unknown law lists the valid ones', test_unknown_law), &
-               new_unittest('plasticity not implemented yet', test_plasticity), &
+               new_unittest('MAT_3DMisesPlastic: properties checked', test_plasticity), &
                new_unittest('missing YOUNG', test_missing_young), &
                new_unittest('missing NUE', test_missing_poisson), &
                new_unittest('unknown property', test_unknown_property), &
@@ -94,10 +94,14 @@ contains
       class(material_t), allocatable :: material
       integer :: i
       associate (keywords => material_keywords())
-         call check(error, size(keywords) == 3 .and. len(keywords) == keyword_length, 'three laws')
+         call check(error, size(keywords) == 4 .and. len(keywords) == keyword_length, 'four laws')
          if (allocated(error)) return
          do i = 1, size(keywords)
-            call create_material(keywords(i), standard_names, standard_values, material, error)
+            if (keywords(i) == 'MAT_3DMisesPlastic') then
+               call create_material(keywords(i), [standard_names, 'SIGY    '], [standard_values, 1.0_dp], material, error)
+            else
+               call create_material(keywords(i), standard_names, standard_values, material, error)
+            end if
             if (allocated(error)) return
             call check(error, material%name == trim(keywords(i)), 'name of '//trim(keywords(i)))
             if (allocated(error)) return
@@ -134,13 +138,37 @@ contains
                          'unknown material law "MAT_Struct_Foo"')
       if (allocated(error)) return
       call check_failure(error, 'MAT_Struct_Foo', standard_names, standard_values, &
-                         'valid laws: MAT_Struct_LinearElastic, MAT_Struct_StVenantKirchhoff, MAT_Struct_NeoHooke')
+                         'valid laws: MAT_Struct_LinearElastic, MAT_Struct_StVenantKirchhoff, MAT_Struct_NeoHooke, '// &
+                         'MAT_3DMisesPlastic')
    end subroutine test_unknown_law
 
    subroutine test_plasticity(error)
       type(error_t), allocatable, intent(out) :: error
-      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'HARD'], &
-                         [1000.0_dp, 0.3_dp, 1.0_dp, 0.0_dp], 'MAT_3DMisesPlastic: plasticity is not implemented')
+      class(material_t), allocatable :: material
+      type(error_t), allocatable :: law_error
+      call create_material('MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'HARD', 'KINH'], &
+                           [1000.0_dp, 0.3_dp, 1.0_dp, 10.0_dp, 5.0_dp], material, law_error)
+      call check(error, .not. allocated(law_error), 'valid linear hardening accepted')
+      if (allocated(error)) return
+      call check(error, material%n_state() == 14, 'n_state')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'HARD'], &
+                         [1000.0_dp, 0.3_dp, 0.0_dp], 'MAT_3DMisesPlastic: missing property SIGY')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'EPSP2', 'SIGY2'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 0.1_dp, 2.0_dp], 'the hardening table has a gap before point 2')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'HARD', 'EPSP1', &
+                         'SIGY1'], [1000.0_dp, 0.3_dp, 1.0_dp, 1.0_dp, 0.1_dp, 2.0_dp], 'excludes HARD, SIGINF and DELTA')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=6) :: 'YOUNG', 'NUE', 'SIGY', 'SIGINF'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 2.0_dp], 'SIGINF and DELTA go together')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'KINH'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, -1.0_dp], 'KINH must be >= 0')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'FOO'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 1.0_dp], 'FOO')
    end subroutine test_plasticity
 
    subroutine test_missing_young(error)

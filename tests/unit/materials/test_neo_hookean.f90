@@ -186,7 +186,7 @@ contains
       type(error_t), allocatable :: law_error
       real(dp) :: state_old(0), state_new(0), stress(6), tangent(6, 6)
       material = new_neo_hookean(young, poisson, 0.0_dp)
-      call material%response([-0.6_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], state_old, state_new, stress, &
+      call material%response([-0.6_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], .true., state_old, state_new, stress, &
                              tangent, law_error)
       call check_message_contains(error, law_error, 'det C')
       if (allocated(error)) return
