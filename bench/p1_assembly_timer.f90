@@ -44,7 +44,11 @@ program p1_assembly_timer
       write (*, '(a)') error%message
       error stop 1
    end if
-   call create_analysis_state(model, state)
+   call create_analysis_state(model, state, error)
+   if (allocated(error)) then
+      write (*, '(a)') error%message
+      error stop 1
+   end if
    call matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
    if (allocated(error)) then
       write (*, '(a)') error%message

@@ -3,8 +3,9 @@
 !> state (the passes' search results and friction branches, and their committed anchors and
 !> slip), both at the last converged increment ("committed") and at the current iterate.
 !> `commit_state` accepts the iterate, `restore_state` returns to the committed state after a
-!> failed increment; restart files hold `state_arrays` and give them back through
-!> `set_state_arrays` (frix_state_restart).
+!> failed increment (the contact system's committed part needs no restoring: the iterations
+!> never change it); a restart (frix_state_restart) reads the displacements, EAS parameters
+!> and history, commits them with `commit_solution`, and sets the contact history itself.
 module frix_analysis_state
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -13,7 +14,7 @@ module frix_analysis_state
    implicit none
    private
 
-   public :: analysis_state_t, create_analysis_state, commit_state, restore_state
+   public :: analysis_state_t, create_analysis_state, commit_state, commit_solution, restore_state
 
    type :: analysis_state_t
       real(dp) :: time = 0.0_dp               !! pseudo time (load factor) of `u`
@@ -63,12 +64,19 @@ contains
    !> Accept the current iterate as converged.
    subroutine commit_state(state)
       type(analysis_state_t), intent(inout) :: state
+      call commit_solution(state)
+      if (state%has_contact) call commit_contact(state%contact)
+   end subroutine commit_state
+
+   !> Accept the current time, displacements, EAS parameters and material history (not the
+   !> contact state, whose committed part commit_contact takes from a converged iterate).
+   subroutine commit_solution(state)
+      type(analysis_state_t), intent(inout) :: state
       state%committed_time = state%time
       state%committed_u = state%u
       state%committed_alpha = state%alpha
       state%committed_history = state%history
-      if (state%has_contact) call commit_contact(state%contact)
-   end subroutine commit_state
+   end subroutine commit_solution
 
    !> Go back to the last converged increment (after a failed increment). The contact
    !> system's committed part is untouched by the iterations (each search and assembly starts

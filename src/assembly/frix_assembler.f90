@@ -11,9 +11,7 @@ module frix_assembler
    implicit none
    private
 
-   public :: assemble_internal, max_nodes_per_element, internal_tangent_symmetric
-
-   integer, parameter :: max_nodes_per_element = 8
+   public :: assemble_internal, internal_tangent_symmetric
 
 contains
 
@@ -31,12 +29,14 @@ contains
       real(dp), intent(out), optional :: gp_stress(:, :, :)
       real(dp), intent(out), optional :: gp_strain(:, :, :)
 
-      real(dp) :: coords(3, max_nodes_per_element), displacement(3, max_nodes_per_element)
-      real(dp) :: element_force(3*max_nodes_per_element)
-      real(dp) :: element_tangent(3*max_nodes_per_element, 3*max_nodes_per_element)
-      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block
+      ! sized by the mesh's largest element (rows of its connectivity)
+      real(dp), allocatable :: coords(:, :), displacement(:, :), element_force(:), element_tangent(:, :)
+      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block, max_nodes
       type(error_t), allocatable :: element_error
 
+      max_nodes = size(model%mesh%connectivity, 1)
+      allocate (coords(3, max_nodes), displacement(3, max_nodes), element_force(3*max_nodes))
+      if (present(matrix)) allocate (element_tangent(3*max_nodes, 3*max_nodes))
       fint = 0.0_dp
       if (present(matrix)) call matrix%zero()
       do e = 1, model%mesh%n_elements

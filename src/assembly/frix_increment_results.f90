@@ -51,8 +51,8 @@ module frix_increment_results
       real(dp), allocatable :: history(:, :, :)     !! (n_state, n_points, n_elements) committed
       logical :: has_contact = .false.
       type(contact_pass_results_t), allocatable :: contact(:)   !! one per contact pass
-      !> per node, over all passes (zero away from contact): pressure, traction (3, n),
-      !> gap, status (0 open, 1 stick, 2 slip), slip
+      !> per node, over all passes: pressure, traction (3, n), gap, status (0 open, 1 stick,
+      !> 2 slip), slip; on nodes that are no pass's slave node the status is -1, the rest zero
       real(dp), allocatable :: contact_pressure(:), contact_traction(:, :), contact_gap(:)
       real(dp), allocatable :: contact_status(:), contact_slip(:)
    end type increment_results_t

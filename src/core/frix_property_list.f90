@@ -185,11 +185,13 @@ contains
       type(error_t), allocatable, intent(inout) :: error
       real(dp), intent(in), optional :: default
       integer :: i
+      character(len=:), allocatable :: wanted
+      wanted = to_upper(trim(adjustl(name)))
       value = 0.0_dp
       if (present(default)) value = default
       found = .false.
       do i = 1, self%count()
-         if (self%names(i) /= name) cycle
+         if (self%names(i) /= wanted) cycle
          value = self%values(i)
          found = .true.
       end do

@@ -128,13 +128,14 @@ contains
       if (.not. options%quiet) then
          write (*, '(a)') 'frix: '//to_string(output%n_increments)// &
             ' converged increments; results in '//results_base(options)//'*'
-         call print_statistics(context, wall_clock_seconds() - start)
+         call print_statistics(context, state%has_contact, wall_clock_seconds() - start)
       end if
    end subroutine analyse
 
    !> The closing statistics block (read by bench/ scripts: keep the `frix: stat` keys).
-   subroutine print_statistics(context, total_seconds)
+   subroutine print_statistics(context, has_contact, total_seconds)
       type(newton_context_t), intent(in) :: context
+      logical, intent(in) :: has_contact
       real(dp), intent(in) :: total_seconds
       character(len=*), parameter :: row = '(a,t40,f12.4)'
       real(dp) :: analyse, factorize, solve
@@ -144,9 +145,9 @@ contains
       write (*, '(a,t40,i12)') 'frix: stat factor_nonzeros', context%solver%factor_entries
       write (*, '(a,t40,i12)') 'frix: stat newton_iterations', context%n_iterations
       write (*, '(a,t40,i12)') 'frix: stat assemblies', context%n_assemblies
-      if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat line_search_trials', context%n_line_search_trials
-      if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat stick_releases', context%n_releases
-      if (context%has_contact) write (*, '(a,t40,i12)') 'frix: stat friction_continuations', &
+      if (has_contact) write (*, '(a,t40,i12)') 'frix: stat line_search_trials', context%n_line_search_trials
+      if (has_contact) write (*, '(a,t40,i12)') 'frix: stat stick_releases', context%n_releases
+      if (has_contact) write (*, '(a,t40,i12)') 'frix: stat friction_continuations', &
          context%n_continuations
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
@@ -343,7 +344,7 @@ contains
       iterations = report%iterations
       if (allocated(error) .or. report%converged .or. report%interrupted) return
       if (.not. allocated(model%controls%friction_continuation)) return
-      if (.not. (context%has_contact .and. state%contact%frictional)) return
+      if (.not. (state%has_contact .and. state%contact%frictional)) return
       factors = [model%controls%friction_continuation, 1.0_dp]
       context%n_continuations = context%n_continuations + 1
       call restore_state(state)

@@ -66,7 +66,6 @@ module frix_newton_solver
       !> them); unallocated otherwise (then an absent argument of assemble_external)
       real(dp), allocatable :: step_window(:)
       logical :: quiet = .false.
-      logical :: has_contact = .false.
       real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
@@ -107,9 +106,8 @@ contains
       call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
       if (allocated(error)) return
       context%symmetric = .not. has_follower_loads(model) .and. internal_tangent_symmetric(model)
-      context%has_contact = state%has_contact
       ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
-      if (context%has_contact) then
+      if (state%has_contact) then
          if (state%contact%unsymmetric) context%symmetric = .false.
       end if
       call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
@@ -147,7 +145,7 @@ contains
       state%time = time
       if (allocated(context%step_window)) deallocate (context%step_window)
       call context%solver%begin_increment()
-      if (context%has_contact) call reset_friction_branches(state%contact)
+      if (state%has_contact) call reset_friction_branches(state%contact)
       if (present(path)) then
          context%step_window = [path%step_start, path%step_end]
          call prescribed_displacements(model, path%step_end, context%fixed, context%prescribed)
@@ -174,11 +172,11 @@ contains
          report%residual_norms(iteration) = residual_norm
          report%relative_norms(iteration) = residual_norm/reference
          report%energy_norms(iteration) = energy
-         if (context%has_contact) then
+         if (state%has_contact) then
             call contact_counts(state%contact, report%active(iteration), report%slipping(iteration))
          end if
          if (.not. context%quiet) call print_progress(label, current_time, iteration, residual_norm, &
-                                                      residual_norm/reference, energy, context%has_contact, &
+                                                      residual_norm/reference, energy, state%has_contact, &
                                                       report%active(iteration), report%slipping(iteration))
 
          u_norm = norm2(state%u)
@@ -187,7 +185,7 @@ contains
              on_path(model, state, path, iteration, u_norm)) then
             if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
                 correction_norm <= model%controls%tol_displacement*u_norm) then
-               if (.not. context%has_contact) then
+               if (.not. state%has_contact) then
                   report%converged = .true.
                   return
                end if
@@ -261,7 +259,7 @@ contains
          end if
          state%time = current_time
          context%n_iterations = context%n_iterations + 1
-         if (context%has_contact .and. iteration > 0) then
+         if (state%has_contact .and. iteration > 0) then
             call contact_line_search(model, context, state, current_time, time_correction, residual_norm, &
                                      correction_norm, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
@@ -370,7 +368,7 @@ contains
       type(error_t), allocatable :: element_error
       real(dp) :: start
       start = wall_clock_seconds()
-      if (context%has_contact) then
+      if (state%has_contact) then
          call search_contact(model, state%contact, state%u, context%matrix, error)
          if (allocated(error)) return
       end if
@@ -386,15 +384,15 @@ contains
       call check_finite(model, context%fint, 'internal force', failure)
       if (allocated(failure)) return
       if (with_tangent) then
-         if (context%has_contact) &
+         if (state%has_contact) &
             call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor)
          call assemble_external(model, time, state%u, context%fext, matrix=context%matrix, &
                                 step_window=context%step_window)
       else
-         if (context%has_contact) call assemble_contact(model, state%contact, state%u, context%fint)
+         if (state%has_contact) call assemble_contact(model, state%contact, state%u, context%fint)
          call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
-      if (context%has_contact) call check_finite(model, context%fint, 'contact force', failure)
+      if (state%has_contact) call check_finite(model, context%fint, 'contact force', failure)
       if (.not. allocated(failure)) call check_finite(model, context%fext, 'external force', failure)
       if (.not. allocated(failure) .and. with_tangent) call check_finite_tangent(model, context%matrix, failure)
       if (allocated(failure)) return

@@ -53,8 +53,8 @@ contains
       if (.not. allocated(error)) call check_nodal_finite(model, results, 'reaction', context%reactions, error)
       if (allocated(error)) return
       results%yielding_points = yielding_points(model, state)
-      results%has_contact = context%has_contact
-      if (context%has_contact) then
+      results%has_contact = state%has_contact
+      if (state%has_contact) then
          call collect_contact(model, state, results, error)
          if (allocated(error)) return
       end if

@@ -20,7 +20,7 @@ module frix_results_output
    implicit none
    private
 
-   public :: results_output_t, frix_version
+   public :: results_output_t
 
    type :: results_output_t
       integer :: n_increments = 0        !! converged increments so far

@@ -7,7 +7,7 @@ module frix_state_restart
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_model, only: model_t
-   use frix_analysis_state, only: analysis_state_t, commit_state
+   use frix_analysis_state, only: analysis_state_t, commit_solution
    use frix_hdf5_results, only: read_restart, read_increment_array
    use frix_contact_assembly, only: get_contact_history, set_contact_history
    implicit none
@@ -32,9 +32,8 @@ contains
       call read_restart(path, step, increment, time, state%u, state%alpha, state%history, error, model%mesh)
       if (allocated(error)) return
       state%time = time
-      call commit_state(state)
+      call commit_solution(state)
       if (.not. state%has_contact) return
-      ! the slip history replaces what commit_state made of the (not yet searched) passes
       do p = 1, size(state%contact%passes)
          call get_contact_history(state%contact, p, values)   ! for the shape
          call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_history', values, error)

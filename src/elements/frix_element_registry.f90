@@ -6,7 +6,7 @@
 !>
 !> Shapes (case-insensitive; frix_hex8_options):
 !>   HEX8      8-node hexahedron, option EAS 0 (default), 3, 9, 21 or 30
-!>   HEXA8-E3  the seed's name of HEX8 with EAS 3
+!>   HEXA8-E3  CARAT's name of HEX8 with EAS 3
 module frix_element_registry
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
@@ -71,7 +71,7 @@ contains
       type(element_entry_t), allocatable :: table(:)
       integer :: i
       table = element_table()
-      i = keyword_index(table%keyword, keyword)
+      i = keyword_index([table%keyword], keyword)
       found = i > 0
       if (.not. found) return
       shape%keyword = table(i)%keyword
@@ -123,7 +123,7 @@ contains
          return
       end if
       table = element_table()
-      i = keyword_index(table%keyword, shape_keyword)
+      i = keyword_index([table%keyword], shape_keyword)
       if (i == 0) then
          call fatal_error(error, 'unknown element shape "'//trim(shape_keyword)// &
                           '" (valid: '//joined(table%keyword)//')')

@@ -3,7 +3,7 @@
 !> parameters) and the kinematics of the element line. Kept apart from frix_hex8 so that the
 !> formulation file holds the mechanics only.
 !>   HEX8      EAS 0 (plain, default), 3, 9, 21 or 30
-!>   HEXA8-E3  the seed code's name of "a hybrid-mixed EAS element Hexa8-E3": HEX8 with EAS 3;
+!>   HEXA8-E3  CARAT's name of "a hybrid-mixed EAS element Hexa8-E3": HEX8 with EAS 3;
 !>             EAS not given or 3 is accepted, any other count is a conflict
 module frix_hex8_options
    use frix_error, only: error_t, fatal_error

@@ -1,5 +1,5 @@
-!> The one interface of the direct sparse solvers (one concrete type per file behind it:
-!> CHOLMOD, UMFPACK). Usage: `factorize(matrix, error)` after every change of values (the
+!> The one interface of the linear solvers (one concrete type per file behind it: CHOLMOD,
+!> UMFPACK, and the guarded CHOLMOD of frix_auto_solver; the registry frix_linear_solver_registry). Usage: `factorize(matrix, error)` after every change of values (the
 !> symbolic analysis is redone only when `matrix%pattern_id` changed), then any number of
 !> `solve(matrix, rhs, x, error)`; `release()` frees the factors.
 module frix_linear_solver
@@ -15,7 +15,7 @@ module frix_linear_solver
    public :: solver_ok, solver_not_positive_definite, solver_singular, solver_too_large, &
              solver_out_of_memory, solver_failed, failure_of_size
 
-   !> What went wrong in the last factorize (linear_solver_t%failure): the Newton loop falls
+   !> What went wrong in the last factorize (linear_solver_t%failure): frix_auto_solver falls
    !> back from CHOLMOD to UMFPACK only for a matrix that is not positive definite; every
    !> other failure is reported as it is.
    integer, parameter :: solver_ok = 0

@@ -10,7 +10,7 @@
 !> CHOLMOD.
 module frix_linear_solver_registry
    use frix_error, only: error_t, fatal_error
-   use frix_property_list, only: keyword_index
+   use frix_property_list, only: keyword_index, joined
    use frix_linear_solver, only: linear_solver_t
    use frix_cholmod_solver, only: cholmod_solver_t
    use frix_umfpack_solver, only: umfpack_solver_t
@@ -18,11 +18,9 @@ module frix_linear_solver_registry
    implicit none
    private
 
-   public :: create_linear_solver, is_linear_solver_keyword, linear_solver_keywords, linear_solver_choices
+   public :: create_linear_solver, is_linear_solver_keyword, linear_solver_choices
 
-   !> The keywords of the bare library solvers, for messages.
-   character(len=*), parameter :: linear_solver_keywords = 'CHOLMOD, UMFPACK'
-   !> The deck's choices, as its messages name them.
+   !> The deck's choices, as its messages name them (the deck's spelling of the table below).
    character(len=*), parameter :: linear_solver_choices = 'Auto, Cholmod or Umfpack'
 
    abstract interface
@@ -35,7 +33,7 @@ module frix_linear_solver_registry
    end interface
 
    type :: solver_entry_t
-      character(len=8) :: keyword
+      character(len=16) :: keyword   !! as long as the deck's SOLVER value (model controls)
       procedure(solver_constructor), pointer, nopass :: create => null()
    end type solver_entry_t
 
@@ -73,7 +71,7 @@ contains
          call table(i)%create(.false., .true., solver)
       else
          call fatal_error(error, 'unknown linear solver "'//trim(adjustl(keyword))//'"; valid: '// &
-                       linear_solver_keywords)
+                          joined(table%keyword))
       end if
    end subroutine create_linear_solver
 

@@ -77,7 +77,7 @@ contains
       type(property_list_t) :: named
       integer :: i
       table = material_table()
-      i = keyword_index(table%keyword, keyword)
+      i = keyword_index([table%keyword], keyword)
       if (i > 0) then
          named = properties
          named%owner = trim(table(i)%keyword)

@@ -40,6 +40,10 @@ contains
       if (allocated(error)) return
       call check(error, found .and. value == 2.0_dp .and. list%count() == 3, 'YOUNG: the last value given')
       if (allocated(error)) return
+      call list%take_real(' nue', value, found, error)
+      if (allocated(error)) return
+      call check(error, found .and. value == 0.3_dp, 'asked for in lower case: nue = NUE')
+      if (allocated(error)) return
       call list%take_real('DENS', value, found, error, default=7.0_dp)
       if (allocated(error)) return
       call check(error, .not. found .and. value == 7.0_dp, 'DENS defaults to 7')

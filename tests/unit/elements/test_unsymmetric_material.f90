@@ -1,7 +1,8 @@
 !> A test material with an unsymmetric tangent: sigma = C eps with C = Hooke's tangent plus a
-!> skew-symmetric part, as a non-associated flow rule would give. It checks that the elements
-!> assemble the full tangent (every block, and K_au of the EAS condensation computed, not
-!> taken as K_ua^T) when a material says its tangent is not symmetric.
+!> skew-symmetric part, as a non-associated flow rule would give: the fixture with which
+!> test_hex8's test_unsymmetric_tangent checks that the elements assemble the full tangent
+!> (every block, and K_au of the EAS condensation computed, not taken as K_ua^T) when a
+!> material says its tangent is not symmetric.
 module test_unsymmetric_material
    use frix_kinds, only: dp
    use frix_error, only: error_t

@@ -404,6 +404,6 @@ contains
       call check(error, solver%name() == 'UMFPACK', 'Umfpack -> UMFPACK')
       if (allocated(error)) return
       call create_linear_solver('MUMPS', solver, registry_error)
-      call check_message_contains(error, registry_error, 'valid: CHOLMOD, UMFPACK')
+      call check_message_contains(error, registry_error, 'valid: AUTO, CHOLMOD, UMFPACK')
    end subroutine test_registry
 end module test_direct_solvers
