@@ -3,8 +3,11 @@
 !> throughput can be measured on a machine shared with other jobs (wall time then counts
 !> the time the process waits for a core; CPU time does not).
 !>
-!> Usage: p1_assembly_timer DECK [REPEATS]
-!> For REPEATS assemblies (default 5) of fint + tangent at u = 0 it prints, per assembly,
+!> Usage: p1_assembly_timer DECK [REPEATS [STRAIN]]
+!> With STRAIN (default 0) the displacement is u = (STRAIN x, 0, 0), a uniform uniaxial strain
+!> (beyond the yield strain every integration point of an elastoplastic material returns to
+!> the yield surface in every assembly: the plastic branch's cost).
+!> For REPEATS assemblies (default 5) of fint + tangent at that u it prints, per assembly,
 !> the best CPU and wall time and the elements per CPU second; then the same for the
 !> element kernel alone (evaluate, no scatter) to split kernel and scatter cost.
 !> Output lines: `p1_assembly_timer: <key> <value>`.
@@ -25,11 +28,11 @@ program p1_assembly_timer
    character(len=4096) :: deck_path, argument
    real(dp), allocatable :: fint(:)
    real(dp) :: cpu_start, cpu_end, wall_start, best_cpu, best_wall, kernel_cpu, kernel_wall
-   real(dp) :: checksum
-   integer :: repeats, r, n_elements
+   real(dp) :: checksum, strain
+   integer :: repeats, r, n_elements, node
 
    if (command_argument_count() < 1) then
-      write (*, '(a)') 'usage: p1_assembly_timer DECK [REPEATS]'
+      write (*, '(a)') 'usage: p1_assembly_timer DECK [REPEATS [STRAIN]]'
       error stop 2
    end if
    call get_command_argument(1, deck_path)
@@ -37,6 +40,11 @@ program p1_assembly_timer
    if (command_argument_count() >= 2) then
       call get_command_argument(2, argument)
       read (argument, *) repeats
+   end if
+   strain = 0.0_dp
+   if (command_argument_count() >= 3) then
+      call get_command_argument(3, argument)
+      read (argument, *) strain
    end if
 
    call read_deck(trim(deck_path), model, error)
@@ -56,6 +64,9 @@ program p1_assembly_timer
    end if
    allocate (fint(3*model%mesh%n_nodes))
    n_elements = model%mesh%n_elements
+   do node = 1, model%mesh%n_nodes
+      state%u(3*node - 2) = strain*model%mesh%coords(1, node)
+   end do
 
    ! warm-up: first touch of the matrix values and of every element's data
    call assemble_internal(model, state, fint, error, matrix=matrix)
@@ -78,6 +89,7 @@ program p1_assembly_timer
 
    write (*, '(a,i0)') 'p1_assembly_timer: elements ', n_elements
    write (*, '(a,i0)') 'p1_assembly_timer: repeats ', repeats
+   write (*, '(a,es12.5)') 'p1_assembly_timer: strain ', strain
    write (*, '(a,es12.5)') 'p1_assembly_timer: assembly_cpu_seconds ', best_cpu
    write (*, '(a,es12.5)') 'p1_assembly_timer: assembly_wall_seconds ', best_wall
    write (*, '(a,f12.0)') 'p1_assembly_timer: elements_per_cpu_second ', n_elements/best_cpu

@@ -30,6 +30,7 @@ module frix_logarithmic_strain
       real(dp) :: projection(6, 6) = 0.0_dp   !! P = dE_log / dE (engineering both sides)
       real(dp) :: eigenvalues(3) = 1.0_dp     !! of C (squared principal stretches)
       real(dp) :: eigenvectors(3, 3) = 0.0_dp !! columns: principal directions of C
+      real(dp) :: unit_hat(3, 3, 6) = 0.0_dp  !! Q^T H_a Q, H_a the tensor of unit component a
    end type log_strain_t
 
    !> Voigt index pairs (i, j) of the components xx yy zz xy xz yz.
@@ -45,7 +46,7 @@ contains
       real(dp), intent(in) :: green(6)
       type(log_strain_t), intent(out) :: log_strain
       logical, intent(out) :: valid
-      real(dp) :: c(3, 3), first(3, 3), direction(3, 3), logarithm(3, 3)
+      real(dp) :: c(3, 3), first(3, 3), logarithm(3, 3)
       integer :: a, i
       c = tensor_of_strain(green)
       c = 2.0_dp*c
@@ -63,9 +64,10 @@ contains
          log_strain%strain = strain_of_tensor(matmul(q, matmul(logarithm, transpose(q))))
          first = first_differences(l)
          do a = 1, 6
+            log_strain%unit_hat(:, :, a) = rotated_unit_strain(q, a)
             ! dC = 2 H_a for a unit engineering component a of E
-            direction = 2.0_dp*matmul(transpose(q), matmul(unit_strain(a), q))
-            log_strain%projection(:, a) = strain_of_tensor(matmul(q, matmul(first*direction, transpose(q))))
+            log_strain%projection(:, a) = strain_of_tensor(matmul(q, matmul(2.0_dp*first*log_strain%unit_hat(:, :, a), &
+                                                                              transpose(q))))
          end do
       end associate
    end subroutine logarithmic_strain
@@ -85,29 +87,33 @@ contains
       real(dp), intent(in) :: stress(6)       !! T, Voigt, tensor shears
       real(dp), intent(in) :: moduli(6, 6)    !! dT/dE_log
       real(dp) :: tangent(6, 6)
-      real(dp) :: second(3, 3, 3), t_hat(3, 3), h_hat(3, 3, 6), product(3, 3)
+      real(dp) :: second(3, 3, 3), t_hat(3, 3), weighted(3, 3, 3), contracted(3, 3, 6)
       integer :: a, b, i, j, k
-      associate (p => log_strain%projection, q => log_strain%eigenvectors)
+      ! With T^, f[.,.,.] and H^ symmetric, T : D2F[H_a, H_b] = 2 sum_ikj T^_ij f[l_i,l_k,l_j]
+      ! H^a_ik H^b_kj, so G_ab = 8 sum_ik H^a_ik V^b_ik with V^b_ik = sum_j W_ikj H^b_kj and
+      ! W_ikj = T^_ij f[l_i, l_k, l_j].
+      associate (p => log_strain%projection, q => log_strain%eigenvectors, h_hat => log_strain%unit_hat)
          tangent = matmul(transpose(p), matmul(moduli, p))
          second = second_differences(log_strain%eigenvalues)
          t_hat = matmul(transpose(q), matmul(tensor_of_stress(stress), q))
-         do a = 1, 6
-            h_hat(:, :, a) = matmul(transpose(q), matmul(unit_strain(a), q))
+         do j = 1, 3
+            do k = 1, 3
+               do i = 1, 3
+                  weighted(i, k, j) = t_hat(i, j)*second(i, k, j)
+               end do
+            end do
+         end do
+         do b = 1, 6
+            do k = 1, 3
+               do i = 1, 3
+                  contracted(i, k, b) = sum(weighted(i, k, :)*h_hat(k, :, b))
+               end do
+            end do
          end do
          do b = 1, 6
             do a = b, 6
-               ! product_ij = sum_k f[l_i, l_k, l_j] (H^a_ik H^b_kj + H^b_ik H^a_kj)
-               do j = 1, 3
-                  do i = 1, 3
-                     product(i, j) = 0.0_dp
-                     do k = 1, 3
-                        product(i, j) = product(i, j) + second(i, k, j)* &
-                                        (h_hat(i, k, a)*h_hat(k, j, b) + h_hat(i, k, b)*h_hat(k, j, a))
-                     end do
-                  end do
-               end do
-               tangent(a, b) = tangent(a, b) + 4.0_dp*sum(t_hat*product)
-               if (a /= b) tangent(b, a) = tangent(b, a) + 4.0_dp*sum(t_hat*product)
+               tangent(a, b) = tangent(a, b) + 8.0_dp*sum(h_hat(:, :, a)*contracted(:, :, b))
+               if (a /= b) tangent(b, a) = tangent(b, a) + 8.0_dp*sum(h_hat(:, :, a)*contracted(:, :, b))
             end do
          end do
       end associate
@@ -185,7 +191,7 @@ contains
       real(dp), intent(in) :: matrix(3, 3)
       real(dp), intent(out) :: eigenvalues(3)
       real(dp), intent(out) :: eigenvectors(3, 3)
-      real(dp) :: a(3, 3), scale, theta, t, c, s, rotation(3, 3)
+      real(dp) :: a(3, 3), scale, theta, t, c, s, column_p(3), column_q(3)
       integer :: sweep, p, q, pair
       integer, parameter :: pair_p(3) = [1, 1, 2], pair_q(3) = [2, 3, 3]
       a = 0.5_dp*(matrix + transpose(matrix))
@@ -200,19 +206,26 @@ contains
             p = pair_p(pair)
             q = pair_q(pair)
             if (a(p, q) == 0.0_dp) cycle
-            ! t = tan(phi), the smaller root of t^2 + 2 theta t - 1 = 0
+            ! t = tan(phi), the smaller root of t^2 + 2 theta t - 1 = 0; A <- R^T A R with the
+            ! rotation R = I + (c - 1)(e_p e_p + e_q e_q) + s (e_p e_q - e_q e_p)
             theta = (a(q, q) - a(p, p))/(2.0_dp*a(p, q))
             t = sign(1.0_dp, theta)/(abs(theta) + sqrt(theta*theta + 1.0_dp))
             c = 1.0_dp/sqrt(t*t + 1.0_dp)
             s = t*c
-            rotation = 0.0_dp
-            rotation(1, 1) = 1.0_dp; rotation(2, 2) = 1.0_dp; rotation(3, 3) = 1.0_dp
-            rotation(p, p) = c; rotation(q, q) = c
-            rotation(p, q) = s; rotation(q, p) = -s
-            a = matmul(transpose(rotation), matmul(a, rotation))
+            column_p = a(:, p)
+            column_q = a(:, q)
+            a(:, p) = c*column_p - s*column_q
+            a(:, q) = s*column_p + c*column_q
+            column_p = a(p, :)
+            column_q = a(q, :)
+            a(p, :) = c*column_p - s*column_q
+            a(q, :) = s*column_p + c*column_q
             a(p, q) = 0.0_dp
             a(q, p) = 0.0_dp
-            eigenvectors = matmul(eigenvectors, rotation)
+            column_p = eigenvectors(:, p)
+            column_q = eigenvectors(:, q)
+            eigenvectors(:, p) = c*column_p - s*column_q
+            eigenvectors(:, q) = s*column_p + c*column_q
          end do
       end do
       do p = 1, 3
@@ -253,13 +266,17 @@ contains
       end do
    end function strain_of_tensor
 
-   !> H_a: the strain tensor of a unit engineering Voigt component a.
-   pure function unit_strain(a) result(tensor)
+   !> Q^T H_a Q, H_a the strain tensor of a unit engineering Voigt component a = (i, j):
+   !> (Q^T H_a Q)_pq = (Q_ip Q_jq + Q_jp Q_iq) / 2 for a shear, Q_ip Q_iq for a normal component.
+   pure function rotated_unit_strain(q, a) result(tensor)
+      real(dp), intent(in) :: q(3, 3)
       integer, intent(in) :: a
       real(dp) :: tensor(3, 3)
-      real(dp) :: voigt(6)
-      voigt = 0.0_dp
-      voigt(a) = 1.0_dp
-      tensor = tensor_of_strain(voigt)
-   end function unit_strain
+      integer :: r, c
+      do c = 1, 3
+         do r = 1, 3
+            tensor(r, c) = 0.5_dp*(q(voigt_i(a), r)*q(voigt_j(a), c) + q(voigt_j(a), r)*q(voigt_i(a), c))
+         end do
+      end do
+   end function rotated_unit_strain
 end module frix_logarithmic_strain
