@@ -59,6 +59,9 @@ module frix_hex8
    real(dp), parameter :: centre_derivative(3, 8) = 0.125_dp*hex8_corner
 
    integer, parameter :: max_local_iterations = 20   !! Newton steps on alpha before giving up
+   !> A local step after which the material fails (e.g. det C <= 0 under a large plastic
+   !> flow) is halved at most this many times (each halving counts as a local iteration).
+   integer, parameter :: max_step_halvings = 8
    real(dp), parameter :: local_tolerance = 1.0e-12_dp !! |h| <= tol * sum_g |G|^T |S| dV
    !> Round-off plateau test: |h| stopped decreasing and |h| <= plateau_tolerance *
    !> sum_g |G| stress_floor max|C| dV, i.e. below 1e-12 |C| |G| dV, the round-off of S.
@@ -338,8 +341,8 @@ contains
    !> Local Newton on alpha: h(alpha) = sum_g G_g^T S_g dV_g = 0, starting from the alpha
    !> passed in, with K_aa = sum_g G^T C G dV. Stops when max|h| <= local_tolerance *
    !> max_k sum_g |G_g|^T |S_g| dV_g, or when |h| stops decreasing at round-off level (see
-   !> plateau_tolerance); fails after max_local_iterations
-   !> steps. On return stresses, tangents and history belong to the converged alpha.
+   !> plateau_tolerance); a step after which the material fails is halved (max_step_halvings);
+   !> fails after max_local_iterations steps. On return stresses, tangents and history belong to the converged alpha.
    subroutine solve_enhanced(name, material, finite, n, enhanced, volume, compatible, state_old, &
                              state_new, alpha, total, pk2, moduli, error)
       character(len=*), intent(in) :: name
@@ -356,15 +359,25 @@ contains
       real(dp) :: residual(max_eas_modes), scale(max_eas_modes), step(max_eas_modes, 1)
       real(dp) :: floor_scale(max_eas_modes), residual_max, previous_max
       real(dp) :: stiffness(max_eas_modes, max_eas_modes), weighted(6, max_eas_modes)
-      integer :: iteration, g
+      real(dp) :: accepted(max_eas_modes)
+      integer :: iteration, g, halvings
       logical :: singular
       previous_max = huge(1.0_dp)
+      halvings = 0
       do iteration = 0, max_local_iterations
          do g = 1, 8
             total(:, g) = compatible(:, g) + matmul(enhanced(:, 1:n, g), alpha(1:n))
          end do
          call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
-         if (allocated(error)) return
+         if (allocated(error)) then
+            ! a Newton step that left the law's domain (det C <= 0, say): halve it
+            if (iteration == 0 .or. halvings == max_step_halvings) return
+            deallocate (error)
+            halvings = halvings + 1
+            alpha(1:n) = 0.5_dp*(accepted(1:n) + alpha(1:n))
+            cycle
+         end if
+         halvings = 0
          residual(1:n) = 0.0_dp
          scale(1:n) = 0.0_dp
          floor_scale(1:n) = 0.0_dp
@@ -395,6 +408,7 @@ contains
             call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
             return
          end if
+         accepted(1:n) = alpha(1:n)
          alpha(1:n) = alpha(1:n) - step(1:n, 1)
       end do
       call fatal_error(error, name//': local EAS iteration not converged after '// &

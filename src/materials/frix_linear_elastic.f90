@@ -62,13 +62,17 @@ contains
       character(len=*), intent(in), optional :: other_names(:)  !! upper case
       logical :: has_young, has_poisson, has_density
       character(len=:), allocatable :: law
+      character(len=32), allocatable :: valid(:)
+      integer :: n_other
       law = trim(properties%owner)
-      if (present(other_names)) then
-         call properties%check_names([character(len=max(8, len(other_names))) :: 'YOUNG', 'NUE', 'DENS', &
-                                      other_names], error)
-      else
-         call properties%check_names([character(len=8) :: 'YOUNG', 'NUE', 'DENS'], error)
-      end if
+      n_other = 0
+      if (present(other_names)) n_other = size(other_names)
+      ! filled element by element: gfortran 12 takes the first item's length for a typed array
+      ! constructor whose length is not a constant
+      allocate (valid(3 + n_other))
+      valid(1:3) = [character(len=32) :: 'YOUNG', 'NUE', 'DENS']
+      if (present(other_names)) valid(4:) = other_names
+      call properties%check_names(valid, error)
       call properties%take_real('YOUNG', young, has_young, error)
       call properties%take_real('NUE', poisson, has_poisson, error)
       call properties%take_real('DENS', density, has_density, error, default=0.0_dp)

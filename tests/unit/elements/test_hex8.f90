@@ -13,6 +13,7 @@ module test_hex8
    use frix_linear_elastic, only: new_linear_elastic, hooke_tangent
    use frix_saint_venant_kirchhoff, only: new_saint_venant_kirchhoff
    use frix_neo_hookean, only: new_neo_hookean
+   use frix_material_registry, only: create_material
    use test_unsymmetric_material, only: new_unsymmetric_elastic
    use test_element_fixtures, only: distorted_coords, sample_displacement, parent_corner, &
                                     symmetric_eigenvalues, solve_dense, element_size
@@ -52,6 +53,8 @@ contains
               new_unittest('tangent vs FD, total Lagrangian, EAS21', test_tangent_total_21), &
               new_unittest('tangent vs FD, total Lagrangian, EAS30', test_tangent_total_30), &
               new_unittest('unsymmetric material: full tangent vs FD, every variant', test_unsymmetric_tangent), &
+              new_unittest('von Mises plasticity: tangent vs FD, every variant, both kinematics', &
+                           test_plastic_tangent), &
               new_unittest('six rigid-body modes, every variant', test_rigid_body_modes), &
               new_unittest('linear patch: constant stress, alpha = 0', test_patch_linear), &
               new_unittest('total Lagrangian patch: homogeneous F', test_patch_total_lagrangian), &
@@ -171,6 +174,52 @@ contains
       end do
    end subroutine test_unsymmetric_tangent
 
+   !> Von Mises with saturation and kinematic hardening, yield strain 2e-3 (sigma_y = 2 with
+   !> E = 1000): displacements of 1 % (small strain) and 15 % (total Lagrangian) of the size
+   !> make every integration point plastic (checked), and the condensed element tangent must
+   !> still be d fint / du (the consistent tangent of the return mapping, and under total
+   !> Lagrangian that of the logarithmic strain, carried through the EAS condensation).
+   subroutine test_plastic_tangent(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      type(error_t), allocatable :: law_error
+      integer :: v
+      call create_material('MAT_3DMisesPlastic', [character(len=6) :: 'YOUNG', 'NUE', 'SIGY', 'SIGINF', 'DELTA', &
+                           'KINH'], [young, poisson, 2.0_dp, 3.0_dp, 50.0_dp, 20.0_dp], material, law_error)
+      if (allocated(law_error)) then
+         call check(error, .false., 'plastic law: '//law_error%message)
+         return
+      end if
+      do v = 1, size(variants)
+         call check_all_plastic(new_hex8(variants(v), kinematics_linear), material, 0.01_dp*element_size, error)
+         if (allocated(error)) return
+         call check_tangent(new_hex8(variants(v), kinematics_linear), material, 0.01_dp*element_size, error)
+         if (allocated(error)) return
+         call check_all_plastic(new_hex8(variants(v), kinematics_total_lagrangian), material, &
+                                0.15_dp*element_size, error)
+         if (allocated(error)) return
+         call check_tangent(new_hex8(variants(v), kinematics_total_lagrangian), material, 0.15_dp*element_size, error)
+         if (allocated(error)) return
+      end do
+   end subroutine test_plastic_tangent
+
+   !> Every integration point yields at the sample displacement of `amplitude` (history entry 2,
+   !> YIELDED, of MAT_3DMisesPlastic).
+   subroutine check_all_plastic(element, material, amplitude, error)
+      type(hex8_t), intent(in) :: element
+      class(material_t), intent(in) :: material
+      real(dp), intent(in) :: amplitude
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: fint(24), state_old(material%n_state(), 8), state_new(material%n_state(), 8)
+      real(dp) :: alpha(element%n_eas)
+      state_old = 0.0_dp
+      alpha = 0.0_dp
+      call element%evaluate(material, distorted_coords(), sample_displacement(amplitude), alpha, state_old, &
+                            state_new, fint, error=error)
+      if (allocated(error)) return
+      call check(error, all(state_new(2, :) == 1.0_dp), element%name//': not every point yields')
+   end subroutine check_all_plastic
+
    !> K against central differences of fint over all 24 dofs on the distorted element; each
    !> perturbed evaluation starts its local EAS solve from the alpha of the base state.
    !> Also checks that K is symmetric (hyperelastic material, symmetric condensation), or with
@@ -182,9 +231,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: symmetric
       real(dp) :: coords(3, 8), u(3, 8), perturbed(3, 8), fint(24), plus(24), minus(24)
-      real(dp) :: tangent(24, 24), difference(24, 24), state_old(0, 8), state_new(0, 8)
+      real(dp) :: tangent(24, 24), difference(24, 24)
+      real(dp) :: state_old(material%n_state(), 8), state_new(material%n_state(), 8)
       real(dp) :: alpha(element%n_eas), trial(element%n_eas), step, scale
       integer :: a, i, column
+      state_old = 0.0_dp
       coords = distorted_coords()
       u = sample_displacement(amplitude)
       alpha = 0.0_dp

@@ -146,11 +146,22 @@ contains
       type(error_t), allocatable, intent(out) :: error
       class(material_t), allocatable :: material
       type(error_t), allocatable :: law_error
+      integer :: i
       call create_material('MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'HARD', 'KINH'], &
                            [1000.0_dp, 0.3_dp, 1.0_dp, 10.0_dp, 5.0_dp], material, law_error)
       call check(error, .not. allocated(law_error), 'valid linear hardening accepted')
       if (allocated(error)) return
       call check(error, material%n_state() == 14, 'n_state')
+      if (allocated(error)) return
+      call create_material('MAT_3DMisesPlastic', [character(len=6) :: 'YOUNG', 'NUE', 'SIGY', 'SIGINF', 'DELTA'], &
+                           [1000.0_dp, 0.3_dp, 1.0_dp, 2.0_dp, 10.0_dp], material, law_error)
+      call check(error, .not. allocated(law_error), 'saturation hardening (SIGINF, DELTA) accepted')
+      if (allocated(error)) return
+      call create_material('MAT_3DMisesPlastic', [character(len=6) :: 'YOUNG', 'NUE', 'SIGY', 'EPSP1', 'SIGY1', &
+                           'EPSP2', 'SIGY2', 'EPSP3', 'SIGY3', 'EPSP4', 'SIGY4', 'EPSP5', 'SIGY5', 'EPSP6', 'SIGY6', &
+                           'EPSP7', 'SIGY7', 'EPSP8', 'SIGY8', 'EPSP9', 'SIGY9', 'EPSP10', 'SIGY10'], &
+                           [1000.0_dp, 0.3_dp, 1.0_dp, (0.01_dp*i, 1.0_dp + 0.1_dp*i, i=1, 10)], material, law_error)
+      call check(error, .not. allocated(law_error), 'a table of 10 points accepted')
       if (allocated(error)) return
       call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'HARD'], &
                          [1000.0_dp, 0.3_dp, 0.0_dp], 'MAT_3DMisesPlastic: missing property SIGY')
