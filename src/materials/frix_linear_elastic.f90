@@ -59,16 +59,20 @@ contains
       type(property_list_t), intent(in) :: properties
       real(dp), intent(out) :: young, poisson, density
       type(error_t), allocatable, intent(inout) :: error
-      character(len=*), intent(in), optional :: other_names(:)  !! upper case
+      character(len=*), intent(in), optional :: other_names(:)  !! upper case, at most 32 characters
+      integer :: n_other
       logical :: has_young, has_poisson, has_density
       character(len=:), allocatable :: law
+      ! a fixed length: gfortran 12 gives an array constructor with a non-constant length in its
+      ! type-spec the length of its first item ('YOUNG', 5), cutting SIGINF and EPSP10 to SIGIN, EPSP1
+      character(len=32), allocatable :: valid(:)
       law = trim(properties%owner)
-      if (present(other_names)) then
-         call properties%check_names([character(len=max(8, len(other_names))) :: 'YOUNG', 'NUE', 'DENS', &
-                                      other_names], error)
-      else
-         call properties%check_names([character(len=8) :: 'YOUNG', 'NUE', 'DENS'], error)
-      end if
+      n_other = 0
+      if (present(other_names)) n_other = size(other_names)
+      allocate (valid(3 + n_other))
+      valid(1:3) = [character(len=32) :: 'YOUNG', 'NUE', 'DENS']
+      if (present(other_names)) valid(4:) = other_names
+      call properties%check_names(valid, error)
       call properties%take_real('YOUNG', young, has_young, error)
       call properties%take_real('NUE', poisson, has_poisson, error)
       call properties%take_real('DENS', density, has_density, error, default=0.0_dp)
