@@ -8,6 +8,8 @@
 !>   MAT_Struct_NeoHooke           compressible neo-Hookean (frix_neo_hookean)
 !> each with YOUNG (required, > 0), NUE (required, -1 < NUE < 0.5), DENS (optional, >= 0,
 !> default 0; mass per unit reference volume).
+!>   MAT_Struct_NeoHookeAbaqus     neo-Hookean of Abaqus and CalculiX (frix_abaqus_neo_hooke):
+!>                                 C10 (> 0), D1 (> 0), DENS
 !>   MAT_3DMisesPlastic            von Mises plasticity (frix_von_mises_plastic): also SIGY,
 !>                                 HARD, SIGINF, DELTA, EPSPk/SIGYk, KINH (docs/materials.md)
 module frix_material_registry
@@ -19,6 +21,7 @@ module frix_material_registry
    use frix_linear_elastic, only: linear_elastic_from_properties
    use frix_saint_venant_kirchhoff, only: saint_venant_kirchhoff_from_properties
    use frix_neo_hookean, only: neo_hookean_from_properties
+   use frix_abaqus_neo_hooke, only: abaqus_neo_hooke_from_properties
    use frix_von_mises_plastic, only: von_mises_from_properties
    implicit none
    private
@@ -54,6 +57,7 @@ contains
       table = [material_entry_t('MAT_Struct_LinearElastic', linear_elastic_from_properties), &
                material_entry_t('MAT_Struct_StVenantKirchhoff', saint_venant_kirchhoff_from_properties), &
                material_entry_t('MAT_Struct_NeoHooke', neo_hookean_from_properties), &
+               material_entry_t('MAT_Struct_NeoHookeAbaqus', abaqus_neo_hooke_from_properties), &
                material_entry_t('MAT_3DMisesPlastic', von_mises_from_properties)]
    end function material_table
 
