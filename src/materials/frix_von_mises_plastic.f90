@@ -1,7 +1,7 @@
 !> Von Mises (J2) plasticity with isotropic hardening (frix_hardening: linear, saturation or
 !> tabulated) and linear kinematic hardening (Prager), associated flow; deck keyword
-!> MAT_3DMisesPlastic (CARAT's), properties YOUNG NUE SIGY [HARD] [SIGINF DELTA] [EPSPk SIGYk]
-!> [KINH] [DENS] (docs/materials.md).
+!> MAT_3DMisesPlastic (CARAT's), properties YOUNG NUE SIGY [HARD | ETAN] [SIGINF DELTA]
+!> [EPSPk SIGYk] [KINH] [DENS] (docs/materials.md).
 !>
 !> Small strain (the element's Geo_Lin): additive split eps = eps_e + eps_p, sigma = kappa tr(eps_e)
 !> 1 + 2 mu dev(eps_e), yield function f = |dev(sigma) - beta| - sqrt(2/3) K(alpha); radial return
@@ -82,12 +82,25 @@ contains
       type(property_list_t), intent(in) :: properties
       class(material_t), allocatable, intent(out) :: material
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: young, poisson, density, kinematic
+      real(dp) :: young, poisson, density, kinematic, tangent_modulus
       type(hardening_t) :: hardening
       logical :: found
       call elastic_constants(properties, young, poisson, density, error, &
-                             [character(len=8) :: hardening_names(), 'KINH'])
+                             [character(len=8) :: hardening_names(), 'KINH', 'ETAN'])
       call read_hardening(properties, hardening, error)
+      ! ETAN: the tangent modulus E_t of the uniaxial curve after yield (CCARAT's `Hard`),
+      ! H = E E_t / (E - E_t) (uniaxial stress: 1/E_t = 1/E + 1/H)
+      call properties%take_real('ETAN', tangent_modulus, found, error, default=0.0_dp)
+      if (found) then
+         if (any(properties%names == 'HARD') .or. size(hardening%strains) > 1) then
+            call append_error(error, trim(properties%owner)//': ETAN excludes HARD and a hardening table')
+         else if (.not. (tangent_modulus >= 0.0_dp .and. tangent_modulus < young)) then
+            call append_error(error, trim(properties%owner)//': ETAN must lie in [0, YOUNG), got '// &
+                              to_string(tangent_modulus))
+         else
+            hardening%modulus = young*tangent_modulus/(young - tangent_modulus)
+         end if
+      end if
       call properties%take_real('KINH', kinematic, found, error, default=0.0_dp)
       if (.not. (kinematic >= 0.0_dp .and. kinematic < huge(1.0_dp))) &
          call append_error(error, trim(properties%owner)//': KINH must be >= 0, got '//to_string(kinematic))

@@ -8,6 +8,7 @@ module test_material_registry
    use frix_linear_elastic, only: linear_elastic_t
    use frix_saint_venant_kirchhoff, only: saint_venant_kirchhoff_t
    use frix_neo_hookean, only: neo_hookean_t
+   use frix_von_mises_plastic, only: von_mises_plastic_t
    use frix_abaqus_neo_hooke, only: abaqus_neo_hooke_t
    use frix_material_registry, only: create_material, material_keywords, keyword_length
    implicit none
@@ -222,6 +223,25 @@ contains
       if (allocated(error)) return
       call check_failure(error, 'MAT_3DMisesPlastic', [character(len=6) :: 'YOUNG', 'NUE', 'SIGY', 'SIGINF'], &
                          [1000.0_dp, 0.3_dp, 1.0_dp, 2.0_dp], 'SIGINF and DELTA go together')
+      if (allocated(error)) return
+      call create_material('MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'ETAN'], &
+                           [1000.0_dp, 0.3_dp, 1.0_dp, 100.0_dp], material, law_error)
+      call check(error, .not. allocated(law_error), 'ETAN accepted')
+      if (allocated(error)) return
+      select type (material)
+      type is (von_mises_plastic_t)
+         ! 1/E_t = 1/E + 1/H: H = 1000 * 100 / 900
+         call check_close(error, material%hardening%modulus, 1000.0_dp*100.0_dp/900.0_dp, 1.0e-14_dp, &
+                          message='HARD from ETAN')
+      class default
+         call check(error, .false., 'wrong dynamic type')
+      end select
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'ETAN', 'HARD'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 100.0_dp, 1.0_dp], 'ETAN excludes HARD')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'ETAN'], &
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 1000.0_dp], 'ETAN must lie in [0, YOUNG)')
       if (allocated(error)) return
       call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'KINH'], &
                          [1000.0_dp, 0.3_dp, 1.0_dp, -1.0_dp], 'KINH must be >= 0')
