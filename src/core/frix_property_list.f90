@@ -156,12 +156,20 @@ contains
    end function property_count
 
    !> Report every name given twice and every name not in `valid` (upper case).
-   subroutine check_names(self, valid, error)
+   !> `listed`, if given, is what the message prints as the valid names (a law with numbered
+   !> properties says "EPSPk, SIGYk (k = 1..50)" rather than a hundred names).
+   subroutine check_names(self, valid, error, listed)
       class(property_list_t), intent(in) :: self
       character(len=*), intent(in) :: valid(:)
       type(error_t), allocatable, intent(inout) :: error
-      character(len=:), allocatable :: name
+      character(len=*), intent(in), optional :: listed
+      character(len=:), allocatable :: name, valid_text
       integer :: i
+      if (present(listed)) then
+         valid_text = listed
+      else
+         valid_text = joined(valid)
+      end if
       do i = 1, self%count()
          name = trim(self%names(i))
          if (any(self%names(1:i - 1) == name)) &
@@ -170,7 +178,7 @@ contains
             call append_error(error, trim(self%owner)//': takes no property, got "'//name//'"')
          else if (.not. any(valid == name)) then
             call append_error(error, trim(self%owner)//': unknown property "'//name//'" (valid: '// &
-                              joined(valid)//')')
+                              valid_text//')')
          end if
       end do
    end subroutine check_names

@@ -55,11 +55,13 @@ contains
    !> The properties of every elastic law: YOUNG (required, > 0), NUE (required,
    !> -1 < NUE < 0.5), DENS (optional, >= 0, default 0; mass per unit reference volume).
    !> A law with further properties names them in `other_names`; any other name is reported.
-   subroutine elastic_constants(properties, young, poisson, density, error, other_names)
+   !> `other_listed` is how messages name YOUNG, NUE, DENS and the other names together.
+   subroutine elastic_constants(properties, young, poisson, density, error, other_names, other_listed)
       type(property_list_t), intent(in) :: properties
       real(dp), intent(out) :: young, poisson, density
       type(error_t), allocatable, intent(inout) :: error
       character(len=*), intent(in), optional :: other_names(:)  !! upper case
+      character(len=*), intent(in), optional :: other_listed
       logical :: has_young, has_poisson, has_density
       character(len=:), allocatable :: law
       character(len=32), allocatable :: valid(:)
@@ -72,7 +74,7 @@ contains
       allocate (valid(3 + n_other))
       valid(1:3) = [character(len=32) :: 'YOUNG', 'NUE', 'DENS']
       if (present(other_names)) valid(4:) = other_names
-      call properties%check_names(valid, error)
+      call properties%check_names(valid, error, other_listed)
       call properties%take_real('YOUNG', young, has_young, error)
       call properties%take_real('NUE', poisson, has_poisson, error)
       call properties%take_real('DENS', density, has_density, error, default=0.0_dp)

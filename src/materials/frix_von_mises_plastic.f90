@@ -28,7 +28,7 @@ module frix_von_mises_plastic
    use frix_property_list, only: property_list_t
    use frix_material, only: material_t, history_name_length
    use frix_linear_elastic, only: elastic_constants, lame_parameters, hooke_tangent
-   use frix_hardening, only: hardening_t, read_hardening, hardening_names
+   use frix_hardening, only: hardening_t, read_hardening, hardening_names, max_table_points
    use frix_logarithmic_strain, only: log_strain_t, logarithmic_strain, log_strain_stress, log_strain_tangent
    implicit none
    private
@@ -86,7 +86,9 @@ contains
       type(hardening_t) :: hardening
       logical :: found
       call elastic_constants(properties, young, poisson, density, error, &
-                             [character(len=8) :: hardening_names(), 'KINH', 'ETAN'])
+                             [character(len=8) :: hardening_names(), 'KINH', 'ETAN'], &
+                             'YOUNG, NUE, DENS, SIGY, HARD, ETAN, SIGINF, DELTA, EPSPk and SIGYk (k = 1..'// &
+                             to_string(max_table_points)//'), KINH')
       call read_hardening(properties, hardening, error)
       ! ETAN: the tangent modulus E_t of the uniaxial curve after yield (CCARAT's `Hard`),
       ! H = E E_t / (E - E_t) (uniaxial stress: 1/E_t = 1/E + 1/H)

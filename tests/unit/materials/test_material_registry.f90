@@ -279,10 +279,8 @@ contains
          return
       end if
       call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'FOO'], &
-                         [1000.0_dp, 0.3_dp, 1.0_dp, 1.0_dp], 'SIGINF, DELTA, EPSP1, SIGY1, EPSP2')
-      if (allocated(error)) return
-      call check_failure(error, 'MAT_3DMisesPlastic', [character(len=5) :: 'YOUNG', 'NUE', 'SIGY', 'FOO'], &
-                         [1000.0_dp, 0.3_dp, 1.0_dp, 1.0_dp], 'EPSP50, SIGY50, KINH)')
+                         [1000.0_dp, 0.3_dp, 1.0_dp, 1.0_dp], 'unknown property "FOO" (valid: YOUNG, NUE, DENS, '// &
+                         'SIGY, HARD, ETAN, SIGINF, DELTA, EPSPk and SIGYk (k = 1..50), KINH)')
    end subroutine test_plasticity_names
 
    subroutine test_missing_young(error)
