@@ -22,8 +22,9 @@ module frix_driver
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
                                   restore_state
-   use frix_newton_solver, only: newton_context_t, newton_report_t, path_constraint_t, setup_newton, &
-                                 solve_increment, equation_label
+   use frix_newton_solver, only: newton_context_t, path_constraint_t, setup_newton, solve_increment
+   use frix_newton_report, only: newton_report_t
+   use frix_equation_checks, only: equation_label
    use frix_results_output, only: results_output_t
    use frix_results_collection, only: collect_results
    use frix_increment_results, only: increment_results_t
@@ -49,6 +50,23 @@ module frix_driver
    end type run_options_t
 
    real(dp), parameter :: growth_factor = 1.5_dp
+
+   !> The increment control of one step (see the module head).
+   type :: step_control_t
+      integer :: step = 0
+      real(dp) :: step_end = 0.0_dp        !! t at the step's end
+      real(dp) :: nominal = 0.0_dp         !! 1 / NUMSTEP
+      real(dp) :: size_now = 0.0_dp        !! the present increment size (after cut-backs)
+      real(dp) :: smallest = 0.0_dp        !! nominal / 2^MAXCUT
+      integer :: increment = 0             !! converged increments of the step
+      integer :: max_iterations = 0
+      logical :: path_control = .false.
+      logical :: landing = .false.         !! path control passed t = step_end: load control to it
+      logical :: final_increment = .false. !! the attempted path increment reaches TARGET
+      logical :: target_reached = .false.
+      type(path_constraint_t) :: path, landing_path
+      real(dp) :: path_increment = 0.0_dp  !! driven displacement per nominal increment [length]
+   end type step_control_t
 
 contains
 
@@ -195,122 +213,170 @@ contains
       type(results_output_t), intent(inout) :: output
       logical, intent(in) :: quiet
       type(error_t), allocatable, intent(out) :: error
+      type(step_control_t) :: control
       type(newton_report_t) :: report
-      type(increment_results_t) :: results
-      real(dp) :: step_end, nominal, size_now, target_time
-      integer :: increment, max_iterations, iterations
-      real(dp) :: smallest, increment_start, previous_time
-      character(len=64) :: label
+      integer :: iterations
+      real(dp) :: increment_start, previous_time
       character(len=:), allocatable :: attempted
-      type(path_constraint_t) :: path, landing_path
-      logical :: path_control, landing, final_increment, target_reached
-      real(dp) :: path_increment   !! driven displacement per nominal increment [length]
+      logical :: repeat
 
-      step_end = real(step, dp)
-      nominal = 1.0_dp/model%steps(step)%n_increments
-      max_iterations = model%steps(step)%max_iterations
-      if (max_iterations <= 0) max_iterations = model%controls%max_iterations
-      size_now = nominal
-      smallest = nominal*0.5_dp**model%controls%max_cutbacks
-      increment = first_increment
-      path_control = model%steps(step)%control == 'PATH'
-      landing = .false.
-      if (path_control) then
-         path%equation = 3*(model%steps(step)%path_node - 1) + model%steps(step)%path_component
-         path%step_start = step_end - 1.0_dp
-         path%step_end = step_end
-         path_increment = (model%steps(step)%path_target - state%committed_u(path%equation))/ &
-                          model%steps(step)%n_increments
-         landing_path = path
-         landing_path%equation = 0   ! load control at the step's end, with the step's loads
-      end if
-      final_increment = .false.
-      target_reached = .false.
-      do while (state%committed_time < step_end - 1.0e-12_dp .and. .not. target_reached)
+      call begin_step(model, step, first_increment, state, control)
+      do while (state%committed_time < control%step_end - 1.0e-12_dp .and. .not. control%target_reached)
          if (stop_requested()) then
             call stopped_error(step, output, state, error)
             return
          end if
-         write (label, '("step",i3,"  incr",i4)') step, increment + 1
          increment_start = wall_clock_seconds()
          previous_time = state%committed_time
-         if (path_control .and. .not. landing) then
-            path%target = state%committed_u(path%equation) + path_increment*size_now/nominal
+         call try_increment(model, control, context, state, quiet, report, iterations, attempted, repeat, error)
+         if (allocated(error)) return
+         if (report%interrupted) then
+            call restore_state(state)
+            call stopped_error(step, output, state, error)
+            return
+         end if
+         if (repeat) cycle
+         if (report%converged) then
+            call accept_increment(model, control, context, state, report, output, error)
+            if (allocated(error)) return
+            if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
+                                                       wall_clock_seconds() - increment_start, iterations)
+            if (control%size_now < control%nominal .and. iterations <= control%max_iterations/3) &
+               control%size_now = min(control%nominal, growth_factor*control%size_now)
+         else
+            call cut_back(model, control, state, report, attempted, output, quiet, error)
+            if (allocated(error)) return
+         end if
+      end do
+      if (control%target_reached .and. .not. quiet) &
+         write (*, '(a)') 'frix: step '//to_string(step)//' ends at t = '//time_text(state%committed_time)// &
+         ': the displacement at '//equation_label(model, control%path%equation)//' reached its target '// &
+         time_text(model%steps(step)%path_target)
+   end subroutine run_step
+
+   !> The increment control of `step` at its start (see the module head).
+   subroutine begin_step(model, step, first_increment, state, control)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: step, first_increment
+      type(analysis_state_t), intent(in) :: state
+      type(step_control_t), intent(out) :: control
+      control%step = step
+      control%step_end = real(step, dp)
+      control%nominal = 1.0_dp/model%steps(step)%n_increments
+      control%max_iterations = model%steps(step)%max_iterations
+      if (control%max_iterations <= 0) control%max_iterations = model%controls%max_iterations
+      control%size_now = control%nominal
+      control%smallest = control%nominal*0.5_dp**model%controls%max_cutbacks
+      control%increment = first_increment
+      control%path_control = model%steps(step)%control == 'PATH'
+      if (.not. control%path_control) return
+      control%path%equation = 3*(model%steps(step)%path_node - 1) + model%steps(step)%path_component
+      control%path%step_start = control%step_end - 1.0_dp
+      control%path%step_end = control%step_end
+      control%path_increment = (model%steps(step)%path_target - state%committed_u(control%path%equation))/ &
+                               model%steps(step)%n_increments
+      control%landing_path = control%path
+      control%landing_path%equation = 0   ! load control at the step's end, with the step's loads
+   end subroutine begin_step
+
+   !> Attempt the next increment of the step: under path control, the driving displacement's
+   !> next target (`repeat`: the load factor passed the step's end, so the increment is to be
+   !> repeated under load control to it); else the next load factor. `attempted` describes it
+   !> for a failure message.
+   subroutine try_increment(model, control, context, state, quiet, report, iterations, attempted, repeat, error)
+      type(model_t), intent(in) :: model
+      type(step_control_t), intent(inout) :: control
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      logical, intent(in) :: quiet
+      type(newton_report_t), intent(out) :: report
+      integer, intent(out) :: iterations
+      character(len=:), allocatable, intent(out) :: attempted
+      logical, intent(out) :: repeat
+      type(error_t), allocatable, intent(out) :: error
+      character(len=64) :: label
+      real(dp) :: target_time
+      repeat = .false.
+      write (label, '("step",i3,"  incr",i4)') control%step, control%increment + 1
+      if (control%path_control .and. .not. control%landing) then
+         associate (path => control%path, final_target => model%steps(control%step)%path_target)
+            path%target = state%committed_u(path%equation) + control%path_increment*control%size_now/control%nominal
             ! the increment that reaches (or would pass) TARGET ends on it and ends the step
-            final_increment = (path%target - model%steps(step)%path_target)*path_increment >= 0.0_dp
-            if (final_increment) path%target = model%steps(step)%path_target
+            control%final_increment = (path%target - final_target)*control%path_increment >= 0.0_dp
+            if (control%final_increment) path%target = final_target
             attempted = 'the increment from t = '//time_text(state%committed_time)//' moving '// &
                         'the displacement at '//equation_label(model, path%equation)//' from '// &
                         time_text(state%committed_u(path%equation))//' to '//time_text(path%target)
-            call attempt_increment(model, context, state, state%committed_time, max_iterations, trim(label), &
-                                   report, iterations, error, path)
-            if (allocated(error)) return
-            if (report%interrupted) then
-               call restore_state(state)
-               call stopped_error(step, output, state, error)
-               return
-            end if
-            if (report%converged .and. state%time > step_end) then
-               ! past the step's end: land on it under load control
-               call restore_state(state)
-               landing = .true.
-               if (.not. quiet) write (*, '(2x,a)') 'the load factor passes t = '//time_text(step_end)// &
-                  ' in this increment: repeated under load control to t = '//time_text(step_end)
-               size_now = step_end - state%committed_time
-               cycle
-            end if
-         else
-            target_time = min(state%committed_time + size_now, step_end)
-            if (step_end - target_time < 1.0e-9_dp*nominal) target_time = step_end
-            attempted = 'the increment from t = '//time_text(state%committed_time)//' to t = '//time_text(target_time)
-            if (landing) then
-               call attempt_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                      report, iterations, error, landing_path)
-            else
-               call attempt_increment(model, context, state, target_time, max_iterations, trim(label), &
-                                      report, iterations, error)
-            end if
-            if (allocated(error)) return
-            if (report%interrupted) then
-               call restore_state(state)
-               call stopped_error(step, output, state, error)
-               return
-            end if
-         end if
-         if (report%converged) then
-            increment = increment + 1
-            target_reached = path_control .and. .not. landing .and. final_increment
-            call commit_state(state)
-            call collect_results(model, step, increment, state, context, report, results, error)
-            if (allocated(error)) return
-            call output%write_increment(model, results, error)
-            if (allocated(error)) return
-            if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
-                                                       wall_clock_seconds() - increment_start, &
-                                                       iterations)
-            if (size_now < nominal .and. iterations <= max_iterations/3) &
-               size_now = min(nominal, growth_factor*size_now)
-         else
+         end associate
+         call attempt_increment(model, context, state, state%committed_time, control%max_iterations, trim(label), &
+                                report, iterations, error, control%path)
+         if (allocated(error) .or. report%interrupted) return
+         if (report%converged .and. state%time > control%step_end) then
+            ! past the step's end: land on it under load control
             call restore_state(state)
-            if (size_now <= smallest*(1.0_dp + 1.0e-9_dp)) then
-               call fatal_error(error, 'frix: step '//to_string(step)//': '//attempted// &
-                                ' failed ('//report%failure//') at the smallest increment allowed ('// &
-                                to_string(model%controls%max_cutbacks)//' cut-backs of '// &
-                                time_text(nominal)//'); the results of the '// &
-                                to_string(output%n_increments)//' converged increments up to t = '// &
-                                time_text(state%committed_time)//' are written')
-               return
-            end if
-            size_now = max(smallest, 0.5_dp*size_now)
-            if (.not. quiet) write (*, '(2x,a)') 'cut-back: '//report%failure//'; new increment size '// &
-               time_text(size_now)
+            control%landing = .true.
+            if (.not. quiet) write (*, '(2x,a)') 'the load factor passes t = '//time_text(control%step_end)// &
+               ' in this increment: repeated under load control to t = '//time_text(control%step_end)
+            control%size_now = control%step_end - state%committed_time
+            repeat = .true.
          end if
-      end do
-      if (target_reached .and. .not. quiet) &
-         write (*, '(a)') 'frix: step '//to_string(step)//' ends at t = '//time_text(state%committed_time)// &
-         ': the displacement at '//equation_label(model, path%equation)//' reached its target '// &
-         time_text(model%steps(step)%path_target)
-   end subroutine run_step
+         return
+      end if
+      target_time = min(state%committed_time + control%size_now, control%step_end)
+      if (control%step_end - target_time < 1.0e-9_dp*control%nominal) target_time = control%step_end
+      attempted = 'the increment from t = '//time_text(state%committed_time)//' to t = '//time_text(target_time)
+      if (control%landing) then
+         call attempt_increment(model, context, state, target_time, control%max_iterations, trim(label), &
+                                report, iterations, error, control%landing_path)
+      else
+         call attempt_increment(model, context, state, target_time, control%max_iterations, trim(label), &
+                                report, iterations, error)
+      end if
+   end subroutine try_increment
+
+   !> Commit a converged increment and write its results.
+   subroutine accept_increment(model, control, context, state, report, output, error)
+      type(model_t), intent(in) :: model
+      type(step_control_t), intent(inout) :: control
+      type(newton_context_t), intent(in) :: context
+      type(analysis_state_t), intent(inout) :: state
+      type(newton_report_t), intent(in) :: report
+      type(results_output_t), intent(inout) :: output
+      type(error_t), allocatable, intent(out) :: error
+      type(increment_results_t) :: results
+      control%increment = control%increment + 1
+      control%target_reached = control%path_control .and. .not. control%landing .and. control%final_increment
+      call commit_state(state)
+      call collect_results(model, control%step, control%increment, state, context, report, results, error)
+      if (allocated(error)) return
+      call output%write_increment(model, results, error)
+   end subroutine accept_increment
+
+   !> After a failed increment: back to the committed state and half the increment size; at
+   !> the smallest size allowed, the error that ends the run.
+   subroutine cut_back(model, control, state, report, attempted, output, quiet, error)
+      type(model_t), intent(in) :: model
+      type(step_control_t), intent(inout) :: control
+      type(analysis_state_t), intent(inout) :: state
+      type(newton_report_t), intent(in) :: report
+      character(len=*), intent(in) :: attempted
+      type(results_output_t), intent(in) :: output
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      call restore_state(state)
+      if (control%size_now <= control%smallest*(1.0_dp + 1.0e-9_dp)) then
+         call fatal_error(error, 'frix: step '//to_string(control%step)//': '//attempted// &
+                          ' failed ('//report%failure//') at the smallest increment allowed ('// &
+                          to_string(model%controls%max_cutbacks)//' cut-backs of '// &
+                          time_text(control%nominal)//'); the results of the '// &
+                          to_string(output%n_increments)//' converged increments up to t = '// &
+                          time_text(state%committed_time)//' are written')
+         return
+      end if
+      control%size_now = max(control%smallest, 0.5_dp*control%size_now)
+      if (.not. quiet) write (*, '(2x,a)') 'cut-back: '//report%failure//'; new increment size '// &
+         time_text(control%size_now)
+   end subroutine cut_back
 
    !> Solve one increment (solve_increment's arguments), with the friction continuation of
    !> MU_CONTINUATION f_1 > ... > f_m > 1 if that fails on a model with frictional contact: a

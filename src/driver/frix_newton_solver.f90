@@ -19,9 +19,8 @@
 module frix_newton_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
-   use frix_error, only: error_t, fatal_error
+   use frix_error, only: error_t
    use frix_strings, only: to_string
-   use frix_finite_check, only: first_non_finite
    use frix_stop_request, only: stop_requested
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
@@ -30,14 +29,15 @@ module frix_newton_solver
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
+   use frix_newton_report, only: newton_report_t, reserve_iteration_log, print_progress
+   use frix_equation_checks, only: check_finite, check_finite_tangent, describe_singularity, equation_label
    use frix_contact_assembly, only: search_contact, assemble_contact, &
                                     contact_counts, reset_friction_branches, &
                                     release_inconsistent_branches
    implicit none
    private
 
-   public :: newton_context_t, newton_report_t, path_constraint_t, setup_newton, solve_increment
-   public :: equation_label
+   public :: newton_context_t, path_constraint_t, setup_newton, solve_increment
 
    !> An increment of a path-following step (see the module head): its constraint, and the
    !> step's pseudo times over which its loads are linear in t. With equation = 0 the
@@ -74,21 +74,9 @@ module frix_newton_solver
       integer :: n_continuations = 0           !! failed increments retried by friction continuation
    end type newton_context_t
 
-   !> What happened in one increment.
-   type :: newton_report_t
-      logical :: converged = .false.
-      integer :: iterations = 0
-      !> per residual evaluation 0 .. max_iterations (0: before the first solve)
-      real(dp), allocatable :: residual_norms(:)   !! ||r||
-      real(dp), allocatable :: relative_norms(:)   !! ||r|| / reference
-      real(dp), allocatable :: energy_norms(:)     !! |du . r| of the correction leading there
-      integer, allocatable :: active(:)            !! contact: slave nodes in contact
-      integer, allocatable :: slipping(:)          !! contact: slave nodes slipping
-      character(len=:), allocatable :: failure     !! why it did not converge
-      logical :: interrupted = .false.             !! stopped by SIGINT/SIGTERM (frix_stop_request)
-   end type newton_report_t
-
    real(dp), parameter :: zero_residual_fraction = 1.0e-4_dp
+   !> What test_convergence found.
+   integer, parameter :: outcome_iterate = 0, outcome_converged = 1, outcome_failed = 2, outcome_released = 3
    !> iterations the report's log holds at first; it doubles when MAXITER allows more
    integer, parameter :: initial_log_length = 64
    real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
@@ -136,23 +124,11 @@ contains
       type(newton_report_t), intent(out) :: report
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
-      type(error_t), allocatable :: inner_error
-      integer :: iteration, n_released
-      real(dp) :: residual_norm, reference, correction_norm, u_norm, energy
-      real(dp) :: diagonal_scale, current_time, time_correction
+      integer :: iteration, outcome
+      real(dp) :: residual_norm, reference, correction_norm, energy, current_time, time_correction
 
       current_time = time
-      state%time = time
-      if (allocated(context%step_window)) deallocate (context%step_window)
-      call context%solver%begin_increment()
-      if (state%has_contact) call reset_friction_branches(state%contact)
-      if (present(path)) then
-         context%step_window = [path%step_start, path%step_end]
-         call prescribed_displacements(model, path%step_end, context%fixed, context%prescribed)
-      else
-         call prescribed_displacements(model, time, context%fixed, context%prescribed)
-      end if
-      where (context%fixed) state%u = context%prescribed
+      call start_increment(model, context, state, time, path)
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
       call reserve_iteration_log(report, min(max_iterations, initial_log_length))
@@ -167,97 +143,24 @@ contains
                                    report%failure, error, predictor=iteration == 0)
          if (allocated(error) .or. allocated(report%failure)) return
          call context%matrix%get_diagonal(context%diagonal)
-         if (iteration > ubound(report%residual_norms, 1)) call reserve_iteration_log(report, 2*iteration)
-         report%iterations = iteration
-         report%residual_norms(iteration) = residual_norm
-         report%relative_norms(iteration) = residual_norm/reference
-         report%energy_norms(iteration) = energy
-         if (state%has_contact) then
-            call contact_counts(state%contact, report%active(iteration), report%slipping(iteration))
-         end if
-         if (.not. context%quiet) call print_progress(label, current_time, iteration, residual_norm, &
-                                                      residual_norm/reference, energy, state%has_contact, &
-                                                      report%active(iteration), report%slipping(iteration))
-
-         u_norm = norm2(state%u)
-         if (residual_norm <= max(model%controls%tol_residual*reference, &
-                                  roundoff_floor(model, context, state%u)) .and. &
-             on_path(model, state, path, iteration, u_norm)) then
-            if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
-                correction_norm <= model%controls%tol_displacement*u_norm) then
-               if (.not. state%has_contact) then
-                  report%converged = .true.
-                  return
-               end if
-               ! nodes held in stick after a slip reversal that the law would let slip?
-               n_released = release_inconsistent_branches(state%contact)
-               if (n_released == 0) then
-                  report%converged = .true.
-                  return
-               end if
-               context%n_releases = context%n_releases + 1
-               if (.not. context%quiet) write (*, '(2x,i0,a)') n_released, &
-                  ' nodes held in stick released to slip'
-               if (iteration >= max_iterations) then
-                  report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'// &
-                                   worst_entries(model, context)
-                  return
-               end if
-               energy = 0.0_dp
-               correction_norm = huge(1.0_dp)
-               cycle
-            end if
-         end if
-         if (iteration >= max_iterations) then
-            report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'// &
-                             worst_entries(model, context)
+         call record_iteration(context, state, label, current_time, iteration, residual_norm, reference, &
+                               energy, report)
+         call test_convergence(model, context, state, iteration, max_iterations, residual_norm, reference, &
+                               correction_norm, report, outcome, path)
+         select case (outcome)
+         case (outcome_converged)
+            report%converged = .true.
             return
-         end if
-         ! (path following starts from an equilibrium state: no reference to diverge from)
-         if (iteration > 0 .and. residual_norm > divergence_factor*report%residual_norms(0) .and. &
-             report%residual_norms(0) > 0.0_dp .and. .not. driving(path)) then
-            report%failure = 'the iterations diverge'//worst_entries(model, context)
+         case (outcome_failed)
             return
-         end if
-
-         ! the value put on the diagonal of constrained equations: the mean |K_ii|
-         diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
-         if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
-         call context%matrix%apply_dirichlet(context%fixed, diagonal_scale)
-         call factorize_and_solve(model, context, inner_error)
-         if (allocated(inner_error)) then
-            if (iteration == 0) then
-               call move_alloc(inner_error, error)
-            else
-               report%failure = inner_error%message
-            end if
-            return
-         end if
-         where (context%fixed) context%correction = 0.0_dp
-         time_correction = 0.0_dp
-         if (driving(path)) then
-            call path_correction(model, context, state, path, time_correction, report%failure, error)
-            if (allocated(error) .or. allocated(report%failure)) return
-         end if
-         call check_finite(model, context%correction, 'Newton correction', report%failure)
-         if (allocated(report%failure)) return
-         energy = abs(dot_product(context%correction, context%residual))
-         if (.not. ieee_is_finite(energy)) then
-            report%failure = 'the energy |du . r| of the correction is not finite (beyond the range of real '// &
-                             'numbers); its largest term is at '// &
-                             equation_label(model, maxloc(abs(context%correction*context%residual), dim=1))
-            return
-         end if
-         correction_norm = norm2(context%correction)
-         state%u = state%u + context%correction
-         call check_finite(model, state%u, 'displacement', report%failure)
-         if (allocated(report%failure)) return
-         current_time = current_time + time_correction
-         if (.not. ieee_is_finite(current_time)) then
-            report%failure = 'the load factor of the path-following iteration is not finite'
-            return
-         end if
-         state%time = current_time
+         case (outcome_released)
+            energy = 0.0_dp
+            correction_norm = huge(1.0_dp)
+            cycle
+         end select
+         call apply_correction(model, context, state, iteration, current_time, time_correction, energy, &
+                               correction_norm, report, error, path)
+         if (allocated(error) .or. allocated(report%failure)) return
          context%n_iterations = context%n_iterations + 1
          if (state%has_contact .and. iteration > 0) then
             call contact_line_search(model, context, state, current_time, time_correction, residual_norm, &
@@ -267,32 +170,149 @@ contains
       end do
    end subroutine solve_increment
 
-   !> Make the report's per-iteration log hold iterations 0 .. last, keeping what it holds
-   !> (grown as the iterations go: MAXITER may be any positive integer).
-   subroutine reserve_iteration_log(report, last)
+   !> Start an increment at pseudo time `time`: the solver's and the contact branches' state
+   !> reset, the prescribed displacements of `time` (path following: of the step's end) set.
+   subroutine start_increment(model, context, state, time, path)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      type(path_constraint_t), intent(in), optional :: path
+      state%time = time
+      if (allocated(context%step_window)) deallocate (context%step_window)
+      call context%solver%begin_increment()
+      if (state%has_contact) call reset_friction_branches(state%contact)
+      if (present(path)) then
+         context%step_window = [path%step_start, path%step_end]
+         call prescribed_displacements(model, path%step_end, context%fixed, context%prescribed)
+      else
+         call prescribed_displacements(model, time, context%fixed, context%prescribed)
+      end if
+      where (context%fixed) state%u = context%prescribed
+   end subroutine start_increment
+
+   !> The iteration's norms into the report's log, and its progress line.
+   subroutine record_iteration(context, state, label, time, iteration, residual_norm, reference, energy, report)
+      type(newton_context_t), intent(in) :: context
+      type(analysis_state_t), intent(in) :: state
+      character(len=*), intent(in) :: label
+      real(dp), intent(in) :: time, residual_norm, reference, energy
+      integer, intent(in) :: iteration
       type(newton_report_t), intent(inout) :: report
-      integer, intent(in) :: last
-      call grow_real(report%residual_norms)
-      call grow_real(report%relative_norms)
-      call grow_real(report%energy_norms)
-      call grow_integer(report%active)
-      call grow_integer(report%slipping)
-   contains
-      subroutine grow_real(values)
-         real(dp), allocatable, intent(inout) :: values(:)
-         real(dp), allocatable :: grown(:)
-         allocate (grown(0:last), source=0.0_dp)
-         if (allocated(values)) grown(0:ubound(values, 1)) = values
-         call move_alloc(grown, values)
-      end subroutine grow_real
-      subroutine grow_integer(values)
-         integer, allocatable, intent(inout) :: values(:)
-         integer, allocatable :: grown(:)
-         allocate (grown(0:last), source=0)
-         if (allocated(values)) grown(0:ubound(values, 1)) = values
-         call move_alloc(grown, values)
-      end subroutine grow_integer
-   end subroutine reserve_iteration_log
+      if (iteration > ubound(report%residual_norms, 1)) call reserve_iteration_log(report, 2*iteration)
+      report%iterations = iteration
+      report%residual_norms(iteration) = residual_norm
+      report%relative_norms(iteration) = residual_norm/reference
+      report%energy_norms(iteration) = energy
+      if (state%has_contact) then
+         call contact_counts(state%contact, report%active(iteration), report%slipping(iteration))
+      end if
+      if (.not. context%quiet) call print_progress(label, time, iteration, residual_norm, &
+                                                   residual_norm/reference, energy, state%has_contact, &
+                                                   report%active(iteration), report%slipping(iteration))
+   end subroutine record_iteration
+
+   !> Whether the iterate is converged (residual and, unless the residual is negligible, the
+   !> correction below their tolerances, on the path; with contact, no node held in stick that
+   !> the law would let slip: else they are released and the iterations go on, `outcome_released`),
+   !> has failed (the iteration limit, divergence) or goes on (`outcome_iterate`).
+   subroutine test_convergence(model, context, state, iteration, max_iterations, residual_norm, reference, &
+                               correction_norm, report, outcome, path)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      integer, intent(in) :: iteration, max_iterations
+      real(dp), intent(in) :: residual_norm, reference, correction_norm
+      type(newton_report_t), intent(inout) :: report
+      integer, intent(out) :: outcome
+      type(path_constraint_t), intent(in), optional :: path
+      real(dp) :: u_norm
+      integer :: n_released
+      outcome = outcome_iterate
+      u_norm = norm2(state%u)
+      if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
+          .and. on_path(model, state, path, iteration, u_norm)) then
+         if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
+             correction_norm <= model%controls%tol_displacement*u_norm) then
+            outcome = outcome_converged
+            if (.not. state%has_contact) return
+            ! nodes held in stick after a slip reversal that the law would let slip?
+            n_released = release_inconsistent_branches(state%contact)
+            if (n_released == 0) return
+            context%n_releases = context%n_releases + 1
+            if (.not. context%quiet) write (*, '(2x,i0,a)') n_released, ' nodes held in stick released to slip'
+            outcome = outcome_released
+            if (iteration < max_iterations) return
+         end if
+      end if
+      if (iteration >= max_iterations) then
+         report%failure = 'no convergence in '//to_string(max_iterations)//' iterations'//worst_entries(model, context)
+         outcome = outcome_failed
+      ! (path following starts from an equilibrium state: no reference to diverge from)
+      else if (iteration > 0 .and. residual_norm > divergence_factor*report%residual_norms(0) .and. &
+               report%residual_norms(0) > 0.0_dp .and. .not. driving(path)) then
+         report%failure = 'the iterations diverge'//worst_entries(model, context)
+         outcome = outcome_failed
+      end if
+   end subroutine test_convergence
+
+   !> One Newton correction: the constrained system solved, the load factor's correction of
+   !> path following (`time_correction`), every value checked finite, the iterate and `time`
+   !> updated; `energy` = |du . r| and `correction_norm` = |du|.
+   subroutine apply_correction(model, context, state, iteration, time, time_correction, energy, correction_norm, &
+                               report, error, path)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      integer, intent(in) :: iteration
+      real(dp), intent(inout) :: time
+      real(dp), intent(out) :: time_correction, energy, correction_norm
+      type(newton_report_t), intent(inout) :: report
+      type(error_t), allocatable, intent(out) :: error
+      type(path_constraint_t), intent(in), optional :: path
+      type(error_t), allocatable :: inner_error
+      real(dp) :: diagonal_scale
+      energy = 0.0_dp
+      correction_norm = 0.0_dp
+      ! the value put on the diagonal of constrained equations: the mean |K_ii|
+      diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
+      if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
+      call context%matrix%apply_dirichlet(context%fixed, diagonal_scale)
+      call factorize_and_solve(model, context, inner_error)
+      if (allocated(inner_error)) then
+         if (iteration == 0) then
+            call move_alloc(inner_error, error)
+         else
+            report%failure = inner_error%message
+         end if
+         return
+      end if
+      where (context%fixed) context%correction = 0.0_dp
+      time_correction = 0.0_dp
+      if (driving(path)) then
+         call path_correction(model, context, state, path, time_correction, report%failure, error)
+         if (allocated(error) .or. allocated(report%failure)) return
+      end if
+      call check_finite(model, context%correction, 'Newton correction', report%failure)
+      if (allocated(report%failure)) return
+      energy = abs(dot_product(context%correction, context%residual))
+      if (.not. ieee_is_finite(energy)) then
+         report%failure = 'the energy |du . r| of the correction is not finite (beyond the range of real '// &
+                          'numbers); its largest term is at '// &
+                          equation_label(model, maxloc(abs(context%correction*context%residual), dim=1))
+         return
+      end if
+      correction_norm = norm2(context%correction)
+      state%u = state%u + context%correction
+      call check_finite(model, state%u, 'displacement', report%failure)
+      if (allocated(report%failure)) return
+      time = time + time_correction
+      if (.not. ieee_is_finite(time)) then
+         report%failure = 'the load factor of the path-following iteration is not finite'
+         return
+      end if
+      state%time = time
+   end subroutine apply_correction
 
    !> Path following: the load-factor correction dt of this iteration and the correction
    !> du = a + dt b, where a = K^-1 r is in context%correction (with K still factorized) and
@@ -411,38 +431,6 @@ contains
       if (.not. (ieee_is_finite(residual_norm) .and. ieee_is_finite(reference))) &
          failure = 'the norm of the residual or of the reactions is not finite (beyond the range of real numbers)'
    end subroutine evaluate_equilibrium
-
-   !> The finite-value guard (docs/solver.md): `failure` names the first equation where
-   !> `values` (per global equation) holds NaN or an infinity, and the quantity; unchanged when
-   !> every value is finite.
-   subroutine check_finite(model, values, quantity, failure)
-      type(model_t), intent(in) :: model
-      real(dp), intent(in) :: values(:)
-      character(len=*), intent(in) :: quantity
-      character(len=:), allocatable, intent(inout) :: failure
-      integer :: equation
-      equation = first_non_finite(values)
-      if (equation == 0) return
-      failure = 'the '//quantity//' is not finite ('//to_string(values(equation))//') at '// &
-                equation_label(model, equation)
-   end subroutine check_finite
-
-   !> check_finite for the tangent matrix: names the column (equation) of the first
-   !> non-finite entry.
-   subroutine check_finite_tangent(model, matrix, failure)
-      type(model_t), intent(in) :: model
-      type(sparse_matrix_t), intent(in) :: matrix
-      character(len=:), allocatable, intent(inout) :: failure
-      integer :: entry, column
-      entry = first_non_finite(matrix%values)
-      if (entry == 0) return
-      column = 1
-      do while (matrix%col_ptr(column) < entry)   ! column j holds entries col_ptr(j-1)+1 .. col_ptr(j)
-         column = column + 1
-      end do
-      failure = 'the tangent stiffness is not finite ('//to_string(matrix%values(entry))//') in the column of '// &
-                equation_label(model, column)
-   end subroutine check_finite_tangent
 
    !> Line search after a Newton correction du with contact, when the residual at u + du is
    !> larger than before the correction (penalty contact overshoots as nodes enter or leave
@@ -570,28 +558,6 @@ contains
       call context%solver%solve(context%matrix, rhs, x, error)
    end subroutine solve_factorized
 
-   !> Name the node and direction where the factorization broke down.
-   subroutine describe_singularity(model, equation, error)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: equation   !! where the factorization failed, 0: unknown
-      type(error_t), allocatable, intent(inout) :: error
-      if (equation <= 0) return
-      error%message = error%message//new_line('a')// &
-                      model%deck_path//': the stiffness matrix is singular at '// &
-                      equation_label(model, equation)// &
-                      ': is that part of the model held against rigid-body motion?'
-   end subroutine describe_singularity
-
-   !> 'node <user id>, direction x|y|z' of global equation `equation` (node-major, 3 per node).
-   function equation_label(model, equation) result(text)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: equation
-      character(len=:), allocatable :: text
-      character(len=1), parameter :: direction(3) = ['x', 'y', 'z']
-      text = 'node '//to_string(model%mesh%node_ids((equation - 1)/3 + 1))//', direction '// &
-             direction(mod(equation - 1, 3) + 1)
-   end function equation_label
-
    !> Where the last iterate is worst, appended to a failure message (as an Abaqus message file
    !> names the largest residual force and displacement correction): the largest residual
    !> component (force) and the largest component of the last Newton correction (length),
@@ -633,33 +599,4 @@ contains
       floor = roundoff_factor*epsilon(1.0_dp)*sqrt(floor)
    end function roundoff_floor
 
-   subroutine print_progress(label, time, iteration, residual_norm, relative_norm, energy, &
-                             contact, active, slipping)
-      character(len=*), intent(in) :: label
-      real(dp), intent(in) :: time, residual_norm, relative_norm, energy
-      integer, intent(in) :: iteration, active, slipping
-      logical, intent(in) :: contact
-      if (contact) then
-         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",a,"  |r|/ref=",a,'// &
-                '"  energy=",a,"  contact",i6,"  slip",i6)') label, time, iteration, norm_text(residual_norm), &
-            norm_text(relative_norm), norm_text(energy), active, slipping
-      else
-         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",a,"  |r|/ref=",a,'// &
-                '"  energy=",a)') label, time, iteration, norm_text(residual_norm), norm_text(relative_norm), &
-            norm_text(energy)
-      end if
-      flush (6)
-   end subroutine print_progress
-
-   !> A norm in 10 characters, es10.3 (" 1.234E-05"), or es10.3e3 ("1.234E+120") when the
-   !> exponent has three digits (es10.3 would drop the letter E: "1.234+120").
-   function norm_text(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=10) :: text
-      if (value == 0.0_dp .or. (abs(value) < 1.0e99_dp .and. abs(value) >= 1.0e-99_dp)) then
-         write (text, '(es10.3)') value
-      else
-         write (text, '(es10.3e3)') value
-      end if
-   end function norm_text
 end module frix_newton_solver

@@ -12,7 +12,8 @@ module frix_results_collection
    use frix_finite_check, only: first_non_finite
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
-   use frix_newton_solver, only: newton_context_t, newton_report_t
+   use frix_newton_solver, only: newton_context_t
+   use frix_newton_report, only: newton_report_t
    use frix_assembler, only: assemble_internal
    use frix_material, only: history_name_length
    use frix_increment_results, only: increment_results_t, named_field_t, contact_pass_results_t
