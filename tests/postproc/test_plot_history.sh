@@ -58,6 +58,29 @@ if "$PYTHON" "$POSTPROC/plot_history.py" "$OUT/bar_history.csv" "$WORK/copy_hist
 else
     fail "plot_history --x/--y: $(cat "$WORK/log.txt")"
 fi
+#    --curve: time becomes the load factor f(time) of a deck's load curve (piecewise linear,
+#    constant beyond its ends); the bar's times 0.5 and 1 give f = 5 and 10 on 0 0 1 10 2 10.
+if message=$("$PYTHON" - "$POSTPROC" "$OUT" <<'PY' 2>&1
+import sys
+sys.path.insert(0, sys.argv[1])
+import numpy as np
+import frix_results
+import plot_history
+history = frix_results.read_history(f"{sys.argv[2]}/bar_history.csv")
+curve = plot_history.parse_curve("0,0,1,10,2,10")
+assert np.array_equal(plot_history.signed_column(history, "time", curve), [5.0, 10.0])
+assert np.array_equal(plot_history.signed_column(history, "-time", curve), [-5.0, -10.0])
+assert np.array_equal(plot_history.signed_column(history, "time"), [0.5, 1.0])
+assert np.array_equal(plot_history.parse_curve("0 0 0.25 1")[1], [0.0, 1.0])
+print("time -> f(time): 0.5 -> 5, 1 -> 10")
+PY
+); then pass "plot_history --curve values: $message"; else fail "plot_history --curve values: $message"; fi
+if "$PYTHON" "$POSTPROC/plot_history.py" "$OUT/bar_history.csv" --x u1_n105 --y time \
+        --curve 0,0,1,10,2,10 -o "$WORK/curve_factor.png" > "$WORK/log.txt" 2>&1; then
+    check_png "$WORK/curve_factor.png" "plot_history --curve"
+else
+    fail "plot_history --curve: $(cat "$WORK/log.txt")"
+fi
 if "$PYTHON" "$POSTPROC/plot_history.py" --help | grep -q -- "--labels"; then
     pass "plot_history --help"
 else
@@ -85,5 +108,11 @@ expect_user_error "label count" "--labels has 1 labels for 2 CSV files" \
     --labels one -o "$WORK/x.png"
 expect_user_error "unwritable output" "cannot write $WORK/no/such/dir/x.png" \
     "$PYTHON" "$POSTPROC/plot_history.py" "$OUT/bar_history.csv" -o "$WORK/no/such/dir/x.png"
+expect_user_error "odd curve" "--curve needs pairs T,F (at least two)" \
+    "$PYTHON" "$POSTPROC/plot_history.py" "$OUT/bar_history.csv" --curve 0,0,1 -o "$WORK/x.png"
+expect_user_error "curve times" "--curve: the times must increase strictly" \
+    "$PYTHON" "$POSTPROC/plot_history.py" "$OUT/bar_history.csv" --curve 0,0,0,1 -o "$WORK/x.png"
+expect_user_error "curve text" "--curve: not a number" \
+    "$PYTHON" "$POSTPROC/plot_history.py" "$OUT/bar_history.csv" --curve 0,0,a,1 -o "$WORK/x.png"
 [ ! -e "$WORK/x.png" ] && pass "no figure written on errors" || fail "a figure was written despite errors"
 finish
