@@ -58,7 +58,8 @@ contains
       error%message = error%message//new_line('a')// &
                       model%deck_path//': the stiffness matrix is singular at '// &
                       equation_label(model, equation)// &
-                      ': is that part of the model held against rigid-body motion?'
+                      ': is that part of the model held against rigid-body motion, or is the load '// &
+                      'beyond what it can carry (a limit load, a collapse mechanism)?'
    end subroutine describe_singularity
 
 
