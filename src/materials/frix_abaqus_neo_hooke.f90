@@ -35,6 +35,7 @@
 !> where the law is Hooke's with mu0 and K0).
 module frix_abaqus_neo_hooke
    use frix_kinds, only: dp
+   use frix_symmetric_tensor, only: symmetric_inverse
    use frix_error, only: error_t, fatal_error, append_error
    use frix_strings, only: to_string
    use frix_material, only: material_t
@@ -189,23 +190,4 @@ contains
       end do
    end subroutine abaqus_neo_hooke_elastic_tangent
 
-   !> Inverse of a symmetric 3 x 3 matrix by cofactors, and its determinant. When the
-   !> determinant is zero the inverse is left as the (unscaled) adjugate.
-   pure subroutine symmetric_inverse(matrix, inverse, determinant)
-      real(dp), intent(in) :: matrix(3, 3)
-      real(dp), intent(out) :: inverse(3, 3)
-      real(dp), intent(out) :: determinant
-      inverse(1, 1) = matrix(2, 2)*matrix(3, 3) - matrix(2, 3)*matrix(3, 2)
-      inverse(1, 2) = matrix(1, 3)*matrix(3, 2) - matrix(1, 2)*matrix(3, 3)
-      inverse(1, 3) = matrix(1, 2)*matrix(2, 3) - matrix(1, 3)*matrix(2, 2)
-      inverse(2, 2) = matrix(1, 1)*matrix(3, 3) - matrix(1, 3)*matrix(3, 1)
-      inverse(2, 3) = matrix(1, 3)*matrix(2, 1) - matrix(1, 1)*matrix(2, 3)
-      inverse(3, 3) = matrix(1, 1)*matrix(2, 2) - matrix(1, 2)*matrix(2, 1)
-      inverse(2, 1) = inverse(1, 2)
-      inverse(3, 1) = inverse(1, 3)
-      inverse(3, 2) = inverse(2, 3)
-      determinant = matrix(1, 1)*inverse(1, 1) + matrix(1, 2)*inverse(2, 1) &
-                    + matrix(1, 3)*inverse(3, 1)
-      if (determinant /= 0.0_dp) inverse = inverse/determinant
-   end subroutine symmetric_inverse
 end module frix_abaqus_neo_hooke

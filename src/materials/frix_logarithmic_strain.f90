@@ -18,6 +18,7 @@
 !> so that T . dE_log = (P^T T) . dE.
 module frix_logarithmic_strain
    use frix_kinds, only: dp
+   use frix_symmetric_tensor, only: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor
    implicit none
    private
 
@@ -32,10 +33,6 @@ module frix_logarithmic_strain
       real(dp) :: eigenvectors(3, 3) = 0.0_dp !! columns: principal directions of C
       real(dp) :: unit_hat(3, 3, 6) = 0.0_dp  !! Q^T H_a Q, H_a the tensor of unit component a
    end type log_strain_t
-
-   !> Voigt index pairs (i, j) of the components xx yy zz xy xz yz.
-   integer, parameter :: voigt_i(6) = [1, 2, 3, 1, 1, 2]
-   integer, parameter :: voigt_j(6) = [1, 2, 3, 2, 3, 3]
 
 contains
 
@@ -232,39 +229,6 @@ contains
          eigenvalues(p) = a(p, p)
       end do
    end subroutine symmetric_eigen3
-
-   !> Symmetric tensor of a Voigt strain (engineering shears halved).
-   pure function tensor_of_strain(voigt) result(tensor)
-      real(dp), intent(in) :: voigt(6)
-      real(dp) :: tensor(3, 3)
-      integer :: a
-      do a = 1, 6
-         tensor(voigt_i(a), voigt_j(a)) = merge(voigt(a), 0.5_dp*voigt(a), a <= 3)
-         tensor(voigt_j(a), voigt_i(a)) = tensor(voigt_i(a), voigt_j(a))
-      end do
-   end function tensor_of_strain
-
-   !> Symmetric tensor of a Voigt stress (tensor shears).
-   pure function tensor_of_stress(voigt) result(tensor)
-      real(dp), intent(in) :: voigt(6)
-      real(dp) :: tensor(3, 3)
-      integer :: a
-      do a = 1, 6
-         tensor(voigt_i(a), voigt_j(a)) = voigt(a)
-         tensor(voigt_j(a), voigt_i(a)) = voigt(a)
-      end do
-   end function tensor_of_stress
-
-   !> Voigt strain (engineering shears) of a symmetric tensor.
-   pure function strain_of_tensor(tensor) result(voigt)
-      real(dp), intent(in) :: tensor(3, 3)
-      real(dp) :: voigt(6)
-      integer :: a
-      do a = 1, 6
-         voigt(a) = merge(tensor(voigt_i(a), voigt_j(a)), &
-                          tensor(voigt_i(a), voigt_j(a)) + tensor(voigt_j(a), voigt_i(a)), a <= 3)
-      end do
-   end function strain_of_tensor
 
    !> Q^T H_a Q, H_a the strain tensor of a unit engineering Voigt component a = (i, j):
    !> (Q^T H_a Q)_pq = (Q_ip Q_jq + Q_jp Q_iq) / 2 for a shear, Q_ip Q_iq for a normal component.
