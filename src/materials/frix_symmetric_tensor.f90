@@ -25,7 +25,6 @@ contains
       end do
    end function tensor_of_strain
 
-
    !> Symmetric tensor of a Voigt stress (tensor shears).
    pure function tensor_of_stress(voigt) result(tensor)
       real(dp), intent(in) :: voigt(6)
@@ -37,7 +36,6 @@ contains
       end do
    end function tensor_of_stress
 
-
    !> Voigt strain (engineering shears) of a symmetric tensor.
    pure function strain_of_tensor(tensor) result(voigt)
       real(dp), intent(in) :: tensor(3, 3)
@@ -48,7 +46,6 @@ contains
                           tensor(voigt_i(a), voigt_j(a)) + tensor(voigt_j(a), voigt_i(a)), a <= 3)
       end do
    end function strain_of_tensor
-
 
    !> Inverse of a symmetric 3 x 3 matrix by cofactors, and its determinant. When the
    !> determinant is zero the inverse is left as the (unscaled) adjugate.
