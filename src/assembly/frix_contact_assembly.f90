@@ -8,10 +8,11 @@
 !>
 !> Each contact pair of the deck gives one pass (slave nodes against master faces or a rigid
 !> plane); PASSES 2 adds the reverse pass (the master's nodes against the slave's faces).
-!> Touching nodes (0 <= g <= GAPTOL) carry no force but get the penalty stiffness
-!> A (eps_N n n + eps_T (I - n n)) (eps_T only with friction; split on the master nodes by
-!> N_a) in the predictor, the first iteration of each increment, so that bodies that touch
-!> without load, as at the start of an analysis, are supported, also sideways by friction.
+!> Touching nodes (0 <= g <= GAPTOL) carry no force but get the stiffness
+!> A (k_N n n + eps_T (I - n n)) (k_N the normal law's stiffness per unit area, eps_N for the
+!> penalty law; eps_T only with friction; split on the master nodes by N_a) in the predictor,
+!> the first iteration of each increment, so that bodies that touch without load, as at the
+!> start of an analysis, are supported, also sideways by friction.
 !> Later iterations use the consistent tangent only: a stiffness without force would hold a
 !> node that has to lift off and stall the iterations.
 !> Slip history: every slave node starts with the closest point of its reference position as
@@ -204,7 +205,7 @@ contains
       if (present(predictor)) touching_stiffness = predictor
       do p = 1, size(system%passes)
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
-            touch_normal = pair%parameters%normal_penalty
+            touch_normal = pair%parameters%normal%stiffness()
             touch_tangential = 0.0_dp
             if (.not. pair%parameters%friction%frictionless()) &
                touch_tangential = pair%parameters%tangential_penalty
@@ -216,7 +217,7 @@ contains
                      call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
                                              pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
                                              pass%result(i), force3, tangent3, branch=pass%branch(i), &
-                                             friction_scale=system%friction_scale)
+                                             friction_scale=system%friction_scale, multiplier=pass%multiplier(i))
                      if (.not. present(matrix)) exit
                      if (.not. slip_reversed(pass, i)) exit
                   end do
@@ -252,7 +253,8 @@ contains
                   call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
                                          pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
                                          x_anchor_face=x_anchor_face, branch=pass%branch(i), &
-                                         friction_scale=system%friction_scale, x_ring=x_ring, patch_faces=patch)
+                                         friction_scale=system%friction_scale, x_ring=x_ring, patch_faces=patch, &
+                                         multiplier=pass%multiplier(i))
                   if (.not. present(matrix)) exit
                   if (.not. slip_reversed(pass, i)) exit
                end do
@@ -305,18 +307,20 @@ contains
       end if
    end function slip_reversed
 
-   !> Touching stiffness (no force): D = A (eps_N n n + eps_T (I - n n)) acting on the gap of
+   !> Touching stiffness (no force): D = A (k_N n n + eps_T (I - n n)) acting on the gap of
    !> the slave node relative to its contact point, K_ab += c_a c_b D over the kernel's nodes with
    !> c = [1, -N_1, ..., -N_4] on a master face, [1] against a rigid plane (force/length).
-   pure subroutine add_touching_stiffness(area, normal_penalty, tangential_penalty, normal, weights, tangent)
-      real(dp), intent(in) :: area, normal_penalty, tangential_penalty
+   pure subroutine add_touching_stiffness(area, normal_stiffness, tangential_penalty, normal, weights, tangent)
+      real(dp), intent(in) :: area               !! A_s (area)
+      real(dp), intent(in) :: normal_stiffness   !! k_N, the normal law's (force/area/length)
+      real(dp), intent(in) :: tangential_penalty !! eps_T, 0 without friction (force/area/length)
       real(dp), intent(in) :: normal(3)       !! unit normal n
       real(dp), intent(in) :: weights(:)      !! c_a per node of the kernel
       real(dp), intent(inout) :: tangent(:, :)  !! (3 size(weights), 3 size(weights))
       real(dp) :: block(3, 3)
       integer :: a, b, k
       do k = 1, 3
-         block(:, k) = area*(normal_penalty - tangential_penalty)*normal*normal(k)
+         block(:, k) = area*(normal_stiffness - tangential_penalty)*normal*normal(k)
          block(k, k) = block(k, k) + area*tangential_penalty
       end do
       do b = 1, size(weights)

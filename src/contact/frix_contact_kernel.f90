@@ -1,13 +1,16 @@
 !> Node-to-surface frictional contact kernel: one slave node against one bilinear master face
 !> of a deformable body, or against a fixed analytical rigid plane. Penalty regularisation in
-!> the normal and tangential directions, Coulomb friction with elastic stick (anchor form),
+!> the tangential direction, Coulomb friction with elastic stick (anchor form), the normal
+!> pressure from the pair's normal contact law (frix_normal_contact_law; penalty by default),
 !> consistent tangent by forward automatic differentiation (frix_dual_number). The formulation
 !> and its decisions are written out in docs/contact.md.
 !>
 !> Kinematics (Wriggers, *Computational Contact Mechanics*, 2nd ed., 2006, 4.1 and 8.3):
 !>   closest point xi* of x_s on the face, n = (x_,1 x x_,2)/|x_,1 x x_,2| at xi* (outward
 !>   from the master body), normal gap g = (x_s - x(xi*)) . n (g < 0: penetration).
-!> Normal: p_N = eps_N max(0, -g) (force/area, compressive positive).
+!> Normal: p_N = p_N(g, lambda) >= 0 (force/area, compressive positive) from the normal contact
+!>   law, lambda the node's Lagrange multiplier (0 unless given); the penalty law's
+!>   p_N = eps_N max(0, -g). The node is open (no force) where the law says it is not active.
 !> Friction: the slip history is an anchor, a material point of the master surface (face
 !>   coordinates xi_A, or a point of the rigid plane); x_A = x(xi_A) moves with the face.
 !>   Elastic tangential gap g_T = (I - n n)(x_s - x_A), trial traction t_trial = -eps_T g_T,
@@ -53,9 +56,10 @@ module frix_contact_kernel
    public :: patch_normals, smooth_projection, smooth_normal_at, max_ring_nodes
    public :: contact_open, contact_stick, contact_slip
 
-   integer, parameter :: contact_open = 0   !! g >= 0 (or outside the face without clamp): no force
-   integer, parameter :: contact_stick = 1  !! g < 0 and the trial traction is admissible
-   integer, parameter :: contact_slip = 2   !! g < 0 and the trial traction was returned (or frictionless)
+   !> not active (penalty: g >= 0), or outside the face without clamp: no force
+   integer, parameter :: contact_open = 0
+   integer, parameter :: contact_stick = 1  !! active and the trial traction is admissible
+   integer, parameter :: contact_slip = 2   !! active and the trial traction was returned (or frictionless)
 
    !> Everything the caller needs to know about one slave node after an evaluation.
    type :: contact_point_result_t
@@ -113,7 +117,8 @@ contains
    !> caller should try the neighbouring face); with `clamp` the closest point of the bounded
    !> face (on an edge or a corner) and the face normal there are used.
    subroutine node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                result, fint, tangent, x_anchor_face, branch, friction_scale, x_ring, patch_faces)
+                                result, fint, tangent, x_anchor_face, branch, friction_scale, x_ring, patch_faces, &
+                                multiplier)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)      !! current slave position X + u
       real(dp), intent(in) :: x_master(3, 4)  !! current master face nodes, outward (HEX8 face) order
@@ -141,11 +146,13 @@ contains
       !> smoothed normals: the faces of the patch (4, n), x_master's face among them, as local
       !> node numbers (1-4: x_master's nodes, 4 + j: x_ring(:, j)), outward (HEX8 face) order
       integer, intent(in), optional :: patch_faces(:, :)
+      !> the node's Lagrange multiplier lambda for the normal law (force/area; default 0)
+      real(dp), intent(in), optional :: multiplier
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
       type(dual_t) :: xr(3, max_ring_nodes), nodal(3, 4), residual(2)
       real(dp) :: inverse(2, 2), xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
-      real(dp) :: jacobian(2, 2), nodal_real(3, 4)
+      real(dp) :: jacobian(2, 2), nodal_real(3, 4), lambda
       logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face, smooth
       integer :: a, k, n_unknowns, used_branch, ring_first
 
@@ -153,6 +160,8 @@ contains
       smooth = present(patch_faces) .and. present(x_ring)
       used_branch = branch_free
       if (present(branch)) used_branch = branch
+      lambda = 0.0_dp
+      if (present(multiplier)) lambda = multiplier
       n_unknowns = merge(27, 15, other_face)
       ring_first = n_unknowns + 1
       if (smooth) n_unknowns = n_unknowns + 3*size(x_ring, 2)
@@ -231,14 +240,14 @@ contains
       result%xi = xi%value
       result%normal = normal%value
       result%gap = gap%value
-      if (.not. (gap%value < 0.0_dp)) then
+      if (.not. parameters%normal%active(gap%value, lambda)) then
          result%status = contact_open
          result%new_anchor_xi = result%xi
          result%new_anchor = x%value
          return
       end if
 
-      pressure = parameters%normal_penalty*(-gap)
+      pressure = parameters%normal%pressure(gap, lambda)
       used_anchor_xi = result%xi
       old_anchor = x%value
       if (has_anchor) then
@@ -299,7 +308,7 @@ contains
    !> fint = -A_s (p_N n + t) and tangent = d fint / d u_s (3 x 3). For an open node the new
    !> anchor is the foot point.
    subroutine node_plane_contact(parameters, x_slave, plane_point, plane_normal, area, anchor, has_anchor, &
-                                 result, fint, tangent, branch, friction_scale)
+                                 result, fint, tangent, branch, friction_scale, multiplier)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)       !! current slave position X + u
       real(dp), intent(in) :: plane_point(3)   !! a point P of the plane
@@ -312,8 +321,9 @@ contains
       real(dp), intent(out) :: tangent(3, 3)   !! d fint / d u_s (force/length)
       integer, intent(in), optional :: branch  !! friction branch, as for node_face_contact
       real(dp), intent(in), optional :: friction_scale  !! as for node_face_contact
+      real(dp), intent(in), optional :: multiplier      !! as for node_face_contact
       type(dual_t) :: xs(3), gap, pressure, relative(3), traction(3), force(3)
-      real(dp) :: normal(3), foot(3), used_anchor(3)
+      real(dp) :: normal(3), foot(3), used_anchor(3), lambda
       logical :: slipping
       integer :: k, used_branch
 
@@ -321,6 +331,8 @@ contains
       tangent = 0.0_dp
       used_branch = branch_free
       if (present(branch)) used_branch = branch
+      lambda = 0.0_dp
+      if (present(multiplier)) lambda = multiplier
       normal = unit(plane_normal)
       xs = dual_variable(x_slave, 1)
       gap = dual_dot(xs - plane_point, dual_constant(normal))
@@ -328,12 +340,12 @@ contains
       result%normal = normal
       result%gap = gap%value
       result%new_anchor = foot
-      if (.not. (gap%value < 0.0_dp)) then
+      if (.not. parameters%normal%active(gap%value, lambda)) then
          result%status = contact_open
          return
       end if
 
-      pressure = parameters%normal_penalty*(-gap)
+      pressure = parameters%normal%pressure(gap, lambda)
       used_anchor = foot
       if (has_anchor) used_anchor = anchor - dot_product(anchor - plane_point, normal)*normal
       if (parameters%friction%frictionless()) then

@@ -1,9 +1,12 @@
-!> Parameters of one contact pair (slave surface against master surface or rigid plane).
+!> Parameters of one contact pair (slave surface against master surface or rigid plane): its
+!> normal contact law (frix_normal_contact_law), tangential penalty, friction law, search band
+!> and normal field.
 module frix_contact_parameters
    use frix_kinds, only: dp
    use frix_error, only: error_t, append_error
    use frix_strings, only: to_string
    use frix_friction_law, only: friction_law_t
+   use frix_normal_contact_law, only: normal_contact_law_t
    implicit none
    private
 
@@ -12,15 +15,16 @@ module frix_contact_parameters
    !> Default of `edge_tolerance` (parent coordinates: 1e-6 of half a face).
    real(dp), parameter :: default_edge_tolerance = 1.0e-6_dp
 
-   !> Penalty parameters and friction law. Units: eps_N and eps_T are stiffnesses per unit
-   !> area (stress per length, e.g. kPa/m), so that the nodal force eps_N (-g) A_s does not
-   !> depend on the mesh size.
+   !> The normal contact law, the tangential penalty and the friction law. eps_T, like the
+   !> penalty law's eps_N, is a stiffness per unit area (stress per length, e.g. kPa/m), so that
+   !> the nodal force eps_T |g_T| A_s does not depend on the mesh size.
    type :: contact_parameters_t
-      real(dp) :: normal_penalty = 0.0_dp      !! eps_N > 0: normal pressure per unit penetration
+      class(normal_contact_law_t), allocatable :: normal   !! p_N(g, lambda): PENALTY
       real(dp) :: tangential_penalty = 0.0_dp  !! eps_T > 0: stick traction per unit elastic slip
       !> Search band (length): the contact search keeps slave/master candidates whose gap is
       !> below this, so that a node about to close is tracked; it does NOT activate contact,
-      !> which needs g < 0 (CARAT's "gap tolerance", 1e-4 in benchmarks S2/S3).
+      !> which the normal law decides (penalty: g < 0). CARAT's "gap tolerance" (1e-4 in
+      !> benchmarks S2/S3) is read this way.
       real(dp) :: gap_tolerance = 0.0_dp
       !> A closest point with |xi_k| <= 1 + edge_tolerance counts as inside the face.
       real(dp) :: edge_tolerance = default_edge_tolerance
@@ -32,18 +36,16 @@ module frix_contact_parameters
 
 contains
 
-   !> Validated parameters. eps_N > 0 and gap_tolerance >= 0 always; eps_T > 0 unless the
-   !> friction law is frictionless (eps_T is then irrelevant and stored as given).
-   subroutine new_contact_parameters(normal_penalty, tangential_penalty, gap_tolerance, friction, &
-                                     parameters, error)
-      real(dp), intent(in) :: normal_penalty       !! eps_N (force/area/length)
+   !> Validated parameters: gap_tolerance >= 0 always; eps_T > 0 unless the friction law is
+   !> frictionless (eps_T is then irrelevant and stored as given). The normal law is
+   !> validated by its registry (frix_normal_contact_law_registry).
+   subroutine new_contact_parameters(normal, tangential_penalty, gap_tolerance, friction, parameters, error)
+      class(normal_contact_law_t), intent(in) :: normal
       real(dp), intent(in) :: tangential_penalty   !! eps_T (force/area/length)
       real(dp), intent(in) :: gap_tolerance        !! search band (length)
       class(friction_law_t), intent(in) :: friction
       type(contact_parameters_t), intent(out) :: parameters
       type(error_t), allocatable, intent(out) :: error
-      if (.not. (normal_penalty > 0.0_dp .and. normal_penalty < huge(1.0_dp))) &
-         call append_error(error, 'contact: normal penalty EPSN must be > 0, got '//to_string(normal_penalty))
       if (.not. friction%frictionless() .and. &
           .not. (tangential_penalty > 0.0_dp .and. tangential_penalty < huge(1.0_dp))) &
          call append_error(error, 'contact: tangential penalty EPST must be > 0 with friction, got '// &
@@ -51,7 +53,7 @@ contains
       if (.not. (gap_tolerance >= 0.0_dp .and. gap_tolerance < huge(1.0_dp))) &
          call append_error(error, 'contact: gap tolerance must be >= 0, got '//to_string(gap_tolerance))
       if (allocated(error)) return
-      parameters%normal_penalty = normal_penalty
+      allocate (parameters%normal, source=normal)
       parameters%tangential_penalty = tangential_penalty
       parameters%gap_tolerance = gap_tolerance
       allocate (parameters%friction, source=friction)

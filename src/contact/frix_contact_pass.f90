@@ -1,7 +1,7 @@
 !> One contact pass: the nodes of a slave surface against the faces of a master surface or a
 !> rigid plane, with each slave node's current master face, friction branch and kernel result,
-!> and its committed slip history (anchor, accumulated slip). docs/contact.md, "In the global
-!> system".
+!> and its committed history (anchor, accumulated slip, Lagrange multiplier of the normal law).
+!> docs/contact.md, "In the global system".
 module frix_contact_pass
    use frix_kinds, only: dp
    use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
@@ -44,6 +44,9 @@ module frix_contact_pass
       real(dp), allocatable :: anchor_point(:, :)  !! (3, n_slave), rigid plane
       logical, allocatable :: has_anchor(:)
       real(dp), allocatable :: slip(:)             !! accumulated slip (length)
+      !> Lagrange multiplier lambda of each slave node for the normal contact law (force/area,
+      !> an estimate of p_N); 0 and unused by the penalty law, not in restart files
+      real(dp), allocatable :: multiplier(:)
    end type contact_pass_t
 
 contains
@@ -100,7 +103,7 @@ contains
    end subroutine set_master_faces
 
    !> The per-node state of a pass whose slave nodes are set: no face, the law's branches, no
-   !> anchor, no slip.
+   !> anchor, no slip, zero multipliers.
    subroutine start_pass_state(pass)
       type(contact_pass_t), intent(inout) :: pass
       integer :: n_slave
@@ -111,7 +114,7 @@ contains
       allocate (pass%slip_direction(3, n_slave), source=0.0_dp)
       allocate (pass%result(n_slave))
       allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
-                source=0.0_dp)
+                pass%multiplier(n_slave), source=0.0_dp)
       allocate (pass%has_anchor(n_slave), source=.false.)
    end subroutine start_pass_state
 

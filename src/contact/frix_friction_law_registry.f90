@@ -1,15 +1,17 @@
 !> The friction law registry: a table of (deck keyword, constructor) entries that turns a
 !> keyword and its (name, value) property pairs into a friction law object (keywords and
 !> property names match case-insensitively). Each law's file parses its own properties, says
-!> which properties it takes and when a contact pair without LAW gets it:
+!> which properties it takes and when a contact pair without LAW gets it (the keyword lookup
+!> and the union of the properties are frix_contact_law_table's):
 !>   COULOMB       Coulomb friction, property MU (required, >= 0; MU = 0 is frictionless);
 !>                 the default of a pair with MU > 0
 !>   FRICTIONLESS  no tangential traction and no tangential stiffness; no properties; the
 !>                 default otherwise
 module frix_friction_law_registry
    use frix_kinds, only: dp
-   use frix_error, only: error_t, fatal_error
-   use frix_property_list, only: property_list_t, property_spec_t, new_property_list, joined, keyword_index
+   use frix_error, only: error_t
+   use frix_property_list, only: property_list_t, property_spec_t, new_property_list, keyword_index
+   use frix_contact_law_table, only: law_entry_t, table_property_specs, find_law
    use frix_friction_law, only: friction_law_t
    use frix_coulomb_friction, only: coulomb_from_properties, frictionless_from_properties, &
                                     coulomb_properties, frictionless_properties, &
@@ -27,12 +29,6 @@ module frix_friction_law_registry
          type(error_t), allocatable, intent(out) :: error
       end subroutine friction_constructor
 
-      !> The properties a law takes.
-      function property_specs() result(specs)
-         import :: property_spec_t
-         type(property_spec_t), allocatable :: specs(:)
-      end function property_specs
-
       !> Whether a contact pair without LAW, giving `given`, gets this law.
       logical function default_choice(given)
          import :: property_list_t
@@ -40,10 +36,9 @@ module frix_friction_law_registry
       end function default_choice
    end interface
 
-   type :: friction_entry_t
-      character(len=16) :: keyword
+   !> keyword, properties (law_entry_t), constructor, default rule
+   type, extends(law_entry_t) :: friction_entry_t
       procedure(friction_constructor), pointer, nopass :: create => null()
-      procedure(property_specs), pointer, nopass :: properties => null()
       procedure(default_choice), pointer, nopass :: by_default => null()
    end type friction_entry_t
 
@@ -57,24 +52,15 @@ contains
    !> by_default holds.
    function friction_table() result(table)
       type(friction_entry_t), allocatable :: table(:)
-      table = [friction_entry_t('COULOMB', coulomb_from_properties, coulomb_properties, coulomb_by_default), &
-               friction_entry_t('FRICTIONLESS', frictionless_from_properties, frictionless_properties, &
+      table = [friction_entry_t('COULOMB', coulomb_properties, coulomb_from_properties, coulomb_by_default), &
+               friction_entry_t('FRICTIONLESS', frictionless_properties, frictionless_from_properties, &
                                 frictionless_by_default)]
    end function friction_table
 
    !> Every property some law takes (each name once), as a deck reads them.
    function friction_property_specs() result(specs)
-      type(property_spec_t), allocatable :: specs(:), law_specs(:)
-      type(friction_entry_t), allocatable :: table(:)
-      integer :: i, j
-      table = friction_table()
-      allocate (specs(0))
-      do i = 1, size(table)
-         law_specs = table(i)%properties()
-         do j = 1, size(law_specs)
-            if (.not. any(specs%name == law_specs(j)%name)) specs = [specs, law_specs(j)]
-         end do
-      end do
+      type(property_spec_t), allocatable :: specs(:)
+      specs = table_property_specs(friction_table())
    end function friction_property_specs
 
    !> The keyword of the law of a contact pair that names none and gives `given`.
@@ -122,11 +108,8 @@ contains
       type(property_list_t) :: named
       integer :: i
       table = friction_table()
-      i = keyword_index(table%keyword, keyword)
-      if (i == 0) then
-         call fatal_error(error, 'unknown friction law "'//trim(adjustl(keyword))//'"; valid laws: '//joined(table%keyword))
-         return
-      end if
+      call find_law(table, keyword, 'friction law', 'laws', i, error)
+      if (i == 0) return
       named = properties
       named%owner = table(i)%keyword
       call table(i)%create(named, law, error)

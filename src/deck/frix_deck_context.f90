@@ -13,7 +13,7 @@ module frix_deck_context
    implicit none
    private
 
-   public :: deck_reader_t, property_t, deck_section_names, box_tolerance, read_keyword_pairs
+   public :: deck_reader_t, property_t, deck_section_names, box_tolerance, read_keyword_pairs, keyword_pair_t
    public :: require, read_node_dof, mark_nodes, extend_origins, extend_properties, one_line, line_integer
    public :: s_problem, s_static, s_curves, s_materials, s_mesh_file, s_node_coords, s_elements, &
              s_mesh_block, s_node_sets, s_surfaces, s_dirichlet, s_neumann, s_body_force, s_steps, &
@@ -73,6 +73,8 @@ module frix_deck_context
       real(dp) :: model_size = 1.0_dp
    contains
       procedure :: report => report_token
+      procedure :: next_line
+      procedure :: expect_end
       procedure :: take_integer
       procedure :: take_real
       procedure :: take_number
@@ -88,17 +90,25 @@ module frix_deck_context
    end type deck_reader_t
 
 
+   !> One pair of a keyword/value section as its pair reader gets it: the deck line, the pair's
+   !> keyword (upper case) and the token after it. The pair reader reads the value(s) from
+   !> `position` on, sets `ok` false after a report, and `known` false for a keyword that does
+   !> not belong to its section (then it reads nothing).
+   type :: keyword_pair_t
+      type(deck_line_t) :: line
+      character(len=:), allocatable :: keyword
+      integer :: position = 1
+      logical :: ok = .true.
+      logical :: known = .true.
+   end type keyword_pair_t
+
    abstract interface
-      !> Read the value(s) of `keyword` of a keyword/value section from token `position` on;
-      !> `known` false: the keyword does not belong to the section (nothing read).
-      subroutine pair_reader_interface(reader, model, line, keyword, position, ok, known)
-         import :: deck_reader_t, model_t, deck_line_t
+      !> Read the value(s) of one keyword/value pair.
+      subroutine pair_reader_interface(reader, model, pair)
+         import :: deck_reader_t, model_t, keyword_pair_t
          type(deck_reader_t), intent(inout) :: reader
          type(model_t), intent(inout) :: model
-         type(deck_line_t), intent(in) :: line
-         character(len=*), intent(in) :: keyword
-         integer, intent(inout) :: position
-         logical, intent(inout) :: ok, known
+         type(keyword_pair_t), intent(inout) :: pair
       end subroutine pair_reader_interface
    end interface
 
@@ -111,25 +121,62 @@ contains
       type(model_t), intent(inout) :: model
       integer, intent(in) :: section
       procedure(pair_reader_interface) :: read_pair
-      integer :: i, position
-      logical :: ok, known
-      do i = reader%first(section), reader%last(section)
-         associate (line => reader%lines(i))
-            position = 1
-            ok = .true.
-            do while (ok .and. position <= line%n_tokens())
-               known = .true.
-               position = position + 1
-               call read_pair(reader, model, line, line%keyword(position - 1), position, ok, known)
-               if (.not. known) then
-                  call reader%report(line, position - 1, 'unknown keyword in section '// &
-                                     trim(deck_section_names(section)))
-                  ok = .false.
-               end if
-            end do
-         end associate
+      type(keyword_pair_t) :: pair
+      integer :: i
+      i = 0
+      do while (reader%next_line(section, i, pair%position, pair%ok))
+         pair%line = reader%lines(i)
+         do while (pair%ok .and. pair%position <= pair%line%n_tokens())
+            pair%known = .true.
+            pair%keyword = pair%line%keyword(pair%position)
+            pair%position = pair%position + 1
+            call read_pair(reader, model, pair)
+            if (.not. pair%known) then
+               call reader%report(pair%line, pair%position - 1, 'unknown keyword in section '// &
+                                  trim(deck_section_names(section)))
+               pair%ok = .false.
+            end if
+         end do
       end do
    end subroutine read_keyword_pairs
+
+   !> The next line of `section` after line `i` that has a token (i = 0: the section's first),
+   !> to be read from its first token: `position` 1 and `ok`; .false. when the section has no
+   !> more. The loop over a section's lines:
+   !>    i = 0
+   !>    do while (reader%next_line(section, i, position, ok))
+   logical function next_line(self, section, i, position, ok) result(found)
+      class(deck_reader_t), intent(in) :: self
+      integer, intent(in) :: section
+      integer, intent(inout) :: i   !! index into self%lines
+      integer, intent(out) :: position
+      logical, intent(out) :: ok
+      position = 1
+      ok = .true.
+      found = .false.
+      i = max(i, self%first(section) - 1)
+      do while (.not. found .and. i < self%last(section))
+         i = i + 1
+         found = self%lines(i)%n_tokens() > 0
+      end do
+   end function next_line
+
+   !> Report `message` (default: unexpected text) at token `position` if the line goes on
+   !> there (only if still `ok`).
+   subroutine expect_end(self, line, position, ok, message)
+      class(deck_reader_t), intent(inout) :: self
+      type(deck_line_t), intent(in) :: line
+      integer, intent(in) :: position
+      logical, intent(inout) :: ok
+      character(len=*), intent(in), optional :: message
+      if (.not. ok .or. position > line%n_tokens()) return
+      ok = .false.
+      if (present(message)) then
+         call self%report(line, position, message)
+      else
+         call self%report(line, position, 'unexpected text')
+      end if
+   end subroutine expect_end
 
    subroutine report_token(self, line, position, what, note)
       class(deck_reader_t), intent(inout) :: self

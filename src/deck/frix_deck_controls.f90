@@ -6,7 +6,7 @@ module frix_deck_controls
    use frix_linear_solver_registry, only: is_linear_solver_keyword, linear_solver_choices
    use frix_model, only: model_t, load_curve_t, step_t, curve_factor
    use frix_deck_tokens, only: deck_line_t, parse_real
-   use frix_deck_context, only: deck_reader_t, read_keyword_pairs, require, read_node_dof, &
+   use frix_deck_context, only: deck_reader_t, read_keyword_pairs, keyword_pair_t, require, read_node_dof, &
                                 s_problem, s_static, s_curves, s_steps
    implicit none
    private
@@ -24,74 +24,70 @@ contains
    end subroutine read_controls
 
    !> `PROBLEMTYP Structure`.
-   subroutine read_problem_pair(reader, model, line, keyword, position, ok, known)
+   subroutine read_problem_pair(reader, model, pair)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
-      type(deck_line_t), intent(in) :: line
-      character(len=*), intent(in) :: keyword
-      integer, intent(inout) :: position
-      logical, intent(inout) :: ok, known
+      type(keyword_pair_t), intent(inout) :: pair
       character(len=:), allocatable :: word
-      known = keyword == 'PROBLEMTYP'
-      if (.not. known) return
-      call reader%take_word(line, position, 'PROBLEMTYP value', word, ok)
-      if (ok .and. to_upper(word) /= 'STRUCTURE') then
-         call reader%report(line, position - 1, 'unknown problem type (expected Structure)')
-         ok = .false.
+      pair%known = pair%keyword == 'PROBLEMTYP'
+      if (.not. pair%known) return
+      call reader%take_word(pair%line, pair%position, 'PROBLEMTYP value', word, pair%ok)
+      if (pair%ok .and. to_upper(word) /= 'STRUCTURE') then
+         call reader%report(pair%line, pair%position - 1, 'unknown problem type (expected Structure)')
+         pair%ok = .false.
       end if
    end subroutine read_problem_pair
 
    !> The Newton controls of STATIC: KINTYP, MAXITER, MAXCUT, TOLRESID, TOLDISP, SOLVER,
    !> MU_CONTINUATION, NEWTONRAPHSO.
-   subroutine read_static_pair(reader, model, line, keyword, position, ok, known)
+   subroutine read_static_pair(reader, model, pair)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
-      type(deck_line_t), intent(in) :: line
-      character(len=*), intent(in) :: keyword
-      integer, intent(inout) :: position
-      logical, intent(inout) :: ok, known
+      type(keyword_pair_t), intent(inout) :: pair
       integer :: value
       real(dp) :: real_value
       character(len=:), allocatable :: word
-      select case (keyword)
-      case ('KINTYP')
-         call reader%take_kinematics(line, position, value, ok)
-         if (ok) model%controls%default_kinematics = value
-      case ('MAXITER')
-         call reader%take_integer(line, position, 'MAXITER', value, ok)
-         call require(reader, ok, value >= 1, line, position - 1, 'MAXITER must be at least 1')
-         if (ok) model%controls%max_iterations = value
-      case ('MAXCUT')
-         call reader%take_integer(line, position, 'MAXCUT', value, ok)
-         call require(reader, ok, value >= 0, line, position - 1, 'MAXCUT must not be negative')
-         if (ok) model%controls%max_cutbacks = value
-      case ('TOLRESID')
-         call reader%take_real(line, position, 'TOLRESID', real_value, ok)
-         call require(reader, ok, real_value > 0.0_dp, line, position - 1, 'TOLRESID must be positive')
-         if (ok) model%controls%tol_residual = real_value
-      case ('TOLDISP')
-         call reader%take_real(line, position, 'TOLDISP', real_value, ok)
-         call require(reader, ok, real_value > 0.0_dp, line, position - 1, 'TOLDISP must be positive')
-         if (ok) model%controls%tol_displacement = real_value
-      case ('SOLVER')
-         call reader%take_word(line, position, 'SOLVER value', word, ok)
-         if (ok .and. .not. is_linear_solver_keyword(word)) then
-            call reader%report(line, position - 1, 'unknown solver (expected '//linear_solver_choices//')')
-            ok = .false.
-         end if
-         if (ok) model%controls%linear_solver = to_upper(word)
-      case ('MU_CONTINUATION')
-         call read_friction_continuation(reader, line, position, model%controls%friction_continuation, ok)
-      case ('NEWTONRAPHSO')
-         call reader%take_word(line, position, 'NEWTONRAPHSO value', word, ok)
-         if (ok .and. to_upper(word) /= 'LOAD_CONTROL' .and. to_upper(word) /= 'DISPLACEMENT_CONTROL') then
-            call reader%report(line, position - 1, &
-                               'unknown NEWTONRAPHSO (expected Load_Control or Displacement_Control)')
-            ok = .false.
-         end if
-      case default
-         known = .false.
-      end select
+      associate (line => pair%line, position => pair%position, ok => pair%ok)
+         select case (pair%keyword)
+         case ('KINTYP')
+            call reader%take_kinematics(line, position, value, ok)
+            if (ok) model%controls%default_kinematics = value
+         case ('MAXITER')
+            call reader%take_integer(line, position, 'MAXITER', value, ok)
+            call require(reader, ok, value >= 1, line, position - 1, 'MAXITER must be at least 1')
+            if (ok) model%controls%max_iterations = value
+         case ('MAXCUT')
+            call reader%take_integer(line, position, 'MAXCUT', value, ok)
+            call require(reader, ok, value >= 0, line, position - 1, 'MAXCUT must not be negative')
+            if (ok) model%controls%max_cutbacks = value
+         case ('TOLRESID')
+            call reader%take_real(line, position, 'TOLRESID', real_value, ok)
+            call require(reader, ok, real_value > 0.0_dp, line, position - 1, 'TOLRESID must be positive')
+            if (ok) model%controls%tol_residual = real_value
+         case ('TOLDISP')
+            call reader%take_real(line, position, 'TOLDISP', real_value, ok)
+            call require(reader, ok, real_value > 0.0_dp, line, position - 1, 'TOLDISP must be positive')
+            if (ok) model%controls%tol_displacement = real_value
+         case ('SOLVER')
+            call reader%take_word(line, position, 'SOLVER value', word, ok)
+            if (ok .and. .not. is_linear_solver_keyword(word)) then
+               call reader%report(line, position - 1, 'unknown solver (expected '//linear_solver_choices//')')
+               ok = .false.
+            end if
+            if (ok) model%controls%linear_solver = to_upper(word)
+         case ('MU_CONTINUATION')
+            call read_friction_continuation(reader, line, position, model%controls%friction_continuation, ok)
+         case ('NEWTONRAPHSO')
+            call reader%take_word(line, position, 'NEWTONRAPHSO value', word, ok)
+            if (ok .and. to_upper(word) /= 'LOAD_CONTROL' .and. to_upper(word) /= 'DISPLACEMENT_CONTROL') then
+               call reader%report(line, position - 1, &
+                                  'unknown NEWTONRAPHSO (expected Load_Control or Displacement_Control)')
+               ok = .false.
+            end if
+         case default
+            pair%known = .false.
+         end select
+      end associate
    end subroutine read_static_pair
 
    !> `MU_CONTINUATION f_1 f_2 ... f_m` (after the keyword): the friction scale factors of the
@@ -138,11 +134,9 @@ contains
       n_curves = 0
       allocate (curves(max(reader%last(s_curves) - reader%first(s_curves) + 1, 0)))
       allocate (reader%curve_ids(0), reader%failed_curve_ids(0))
-      do i = reader%first(s_curves), reader%last(s_curves)
+      i = 0
+      do while (reader%next_line(s_curves, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             curve%id = 0
             call reader%expect_keyword(line, position, 'CURVE', ok)
             id_position = position
@@ -203,16 +197,15 @@ contains
       allocate (model%steps(0))
       reader%step_lines = 0
       last_step_line = 0
-      do i = reader%first(s_steps), reader%last(s_steps)
-         if (reader%lines(i)%n_tokens() > 0) last_step_line = i
+      i = 0
+      do while (reader%next_line(s_steps, i, position, ok))
+         last_step_line = i
       end do
       expected = 1
-      do i = reader%first(s_steps), reader%last(s_steps)
+      i = 0
+      do while (reader%next_line(s_steps, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
             reader%step_lines = reader%step_lines + 1
-            position = 1
-            ok = .true.
             call reader%expect_keyword(line, position, 'STEP', ok)
             call reader%take_integer(line, position, 'a step number', number, ok)
             call require(reader, ok, number == expected, line, position - 1, &

@@ -22,11 +22,9 @@ contains
       real(dp) :: values(3)
       logical :: ok
       allocate (model%dirichlet(0))
-      do i = reader%first(s_dirichlet), reader%last(s_dirichlet)
+      i = 0
+      do while (reader%next_line(s_dirichlet, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             call reader%take_node_target(model, line, position, nodes, ok)
             call reader%expect_keyword(line, position, 'DOF', ok)
             flag_position = position
@@ -45,10 +43,7 @@ contains
                   call reader%take_curve(line, position, curves(k), ok)
                end do
             end if
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok)
             if (.not. ok) cycle
             do k = 1, 3
                if (flags(k) == 0) cycle
@@ -77,11 +72,9 @@ contains
       real(dp) :: values(3)
       logical :: ok
       allocate (model%nodal_forces(0), model%pressures(0))
-      do i = reader%first(s_neumann), reader%last(s_neumann)
+      i = 0
+      do while (reader%next_line(s_neumann, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             if (line%keyword(1) == 'SURF') then
                position = 2
                call reader%take_word(line, position, 'a surface name', name, ok)
@@ -127,10 +120,7 @@ contains
                call reader%expect_keyword(line, position, 'CURVE', ok)
                call reader%take_curve(line, position, curve, ok)
             end if
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok)
             if (.not. ok) cycle
             do k = 1, 3
                if (values(k) == 0.0_dp) cycle
@@ -154,11 +144,9 @@ contains
       integer :: i, k, position, set
       logical :: ok
       allocate (model%body_forces(0))
-      do i = reader%first(s_body_force), reader%last(s_body_force)
+      i = 0
+      do while (reader%next_line(s_body_force, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             select case (line%keyword(1))
             case ('ALL')
                position = 2
@@ -186,10 +174,7 @@ contains
                call reader%expect_keyword(line, position, 'CURVE', ok)
                call reader%take_curve(line, position, body_force%curve, ok)
             end if
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok)
             if (ok) model%body_forces = [model%body_forces, body_force]
          end associate
       end do

@@ -32,17 +32,12 @@ contains
       character(len=:), allocatable :: file, full_path
       type(error_t), allocatable :: error
       n_files = 0
-      do i = reader%first(s_mesh_file), reader%last(s_mesh_file)
+      i = 0
+      do while (reader%next_line(s_mesh_file, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             call reader%expect_keyword(line, position, 'FILE', ok)
             call reader%take_word(line, position, 'a mesh file name', file, ok)
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text after the file name')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok, 'unexpected text after the file name')
             if (.not. ok) cycle
             n_files = n_files + 1
             if (n_files > 1) then
@@ -88,19 +83,14 @@ contains
       allocate (extra%coords(3, capacity), extra%node_ids(capacity))
       allocate (extra%connectivity(8, 0), extra%element_ids(0), extra%element_block(0))
       n = 0
-      do i = reader%first(s_node_coords), reader%last(s_node_coords)
+      i = 0
+      do while (reader%next_line(s_node_coords, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             call reader%expect_keyword(line, position, 'NODE', ok)
             call reader%take_integer(line, position, 'a node id', id, ok)
             call reader%expect_keyword(line, position, 'COORD', ok)
             call reader%take_reals(line, position, 'a coordinate', x, ok)
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text after the coordinates')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok, 'unexpected text after the coordinates')
             if (.not. ok) then
                reader%mesh_failed = .true.
                cycle
@@ -137,11 +127,9 @@ contains
       real(dp) :: origin(3), lengths(3)
       integer :: divisions(3), node_offset, element_offset, i, position, k
       logical :: ok, has(3)
-      do i = reader%first(s_mesh_block), reader%last(s_mesh_block)
+      i = 0
+      do while (reader%next_line(s_mesh_block, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             call reader%expect_keyword(line, position, 'BLOCK', ok)
             call reader%take_word(line, position, 'a block name', name, ok)
             node_offset = 0
@@ -235,9 +223,9 @@ contains
       real(dp) :: box(6)
       integer :: i, k, n, position, id
       logical :: ok
-      do i = reader%first(s_node_sets), reader%last(s_node_sets)
+      i = 0
+      do while (reader%next_line(s_node_sets, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
             call read_selection_head(reader, model, line, .false., name, position, ok)
             if (.not. ok) cycle
             select case (line%keyword(position))
@@ -273,10 +261,7 @@ contains
                call reader%report(line, position, 'expected NODES or BOX')
                ok = .false.
             end select
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok)
             if (ok) then
                set%name = name
                set%nodes = sorted_unique(nodes)
@@ -287,22 +272,21 @@ contains
       end do
    end subroutine read_node_sets
 
-   !> `SET <name>` (node set) or `SURF <name>` (`surface`) and the presence of the selection
-   !> keyword after it (at `position`); the name must be new. ok false after a report.
+   !> `SET <name>` (node set) or `SURF <name>` (`surface`) from token `position` on, and the
+   !> presence of the selection keyword after it (then at `position`); the name must be new.
+   !> ok false after a report.
    subroutine read_selection_head(reader, model, line, surface, name, position, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(in) :: model
       type(deck_line_t), intent(in) :: line
       logical, intent(in) :: surface
       character(len=:), allocatable, intent(out) :: name
-      integer, intent(out) :: position
-      logical, intent(out) :: ok
+      integer, intent(inout) :: position
+      logical, intent(inout) :: ok
       character(len=*), parameter :: keyword(2) = ['SET ', 'SURF'], kind(2) = ['node set', 'surface ']
       character(len=*), parameter :: choices(2) = ['NODES or BOX', 'BOX or FACES']
       integer :: k
       k = merge(2, 1, surface)
-      position = 1
-      ok = .true.
       call reader%expect_keyword(line, position, trim(keyword(k)), ok)
       call reader%take_word(line, position, 'a '//trim(kind(k))//' name', name, ok)
       if (ok) then
@@ -339,9 +323,9 @@ contains
       real(dp) :: box(6)
       integer :: i, k, n, position, id, face
       logical :: ok
-      do i = reader%first(s_surfaces), reader%last(s_surfaces)
+      i = 0
+      do while (reader%next_line(s_surfaces, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
             call read_selection_head(reader, model, line, .true., name, position, ok)
             if (.not. ok) cycle
             select case (line%keyword(position))
@@ -382,10 +366,7 @@ contains
                call reader%report(line, position, 'expected BOX or FACES')
                ok = .false.
             end select
-            if (ok .and. position <= line%n_tokens()) then
-               call reader%report(line, position, 'unexpected text')
-               ok = .false.
-            end if
+            call reader%expect_end(line, position, ok)
             if (.not. ok) cycle
             surface%name = name
             model%mesh%surfaces = [model%mesh%surfaces, surface]

@@ -41,11 +41,9 @@ contains
       n_materials = 0
       allocate (materials(max(reader%last(s_materials) - reader%first(s_materials) + 1, 0)))
       allocate (ids(size(materials)), reader%failed_material_ids(0))
-      do i = reader%first(s_materials), reader%last(s_materials)
+      i = 0
+      do while (reader%next_line(s_materials, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
-            position = 1
-            ok = .true.
             id = 0
             call reader%expect_keyword(line, position, 'MAT', ok)
             call reader%take_integer(line, position, 'a material id', id, ok)
@@ -113,12 +111,10 @@ contains
       allocate (connectivity(rows, capacity), source=0)
       allocate (ids(capacity), properties(capacity), origin(capacity))
       n = 0
-      do i = reader%first(s_elements), reader%last(s_elements)
+      i = 0
+      do while (reader%next_line(s_elements, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
             if (line%keyword(1) == 'SET') cycle
-            position = 1
-            ok = .true.
             call reader%take_integer(line, position, 'an element id', id, ok)
             first_node = position + 2
             call read_property(reader, model, line, position, .true., property, shape, ok)
@@ -338,12 +334,11 @@ contains
       integer :: i, k, position, set, property, element
       logical :: ok
       type(element_shape_t) :: shape
-      do i = reader%first(s_elements), reader%last(s_elements)
+      i = 0
+      do while (reader%next_line(s_elements, i, position, ok))
          associate (line => reader%lines(i))
-            if (line%n_tokens() == 0) cycle
             if (line%keyword(1) /= 'SET') cycle
             position = 2
-            ok = .true.
             call reader%take_word(line, position, 'an element set name', name, ok)
             set = 0
             if (ok) set = model%mesh%find_element_set(name)

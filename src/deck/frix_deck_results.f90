@@ -4,7 +4,7 @@ module frix_deck_results
    use frix_strings, only: to_upper
    use frix_model, only: model_t, history_request_t
    use frix_deck_tokens, only: deck_line_t
-   use frix_deck_context, only: deck_reader_t, read_keyword_pairs, require, read_node_dof, s_results
+   use frix_deck_context, only: deck_reader_t, read_keyword_pairs, keyword_pair_t, require, read_node_dof, s_results
    implicit none
    private
 
@@ -20,34 +20,33 @@ contains
    end subroutine read_results
 
    !> `VTK|LISTING|POS3D|HDF5 Yes|No`, `EVERY <n>`, `HISTORY ...`.
-   subroutine read_results_pair(reader, model, line, keyword, position, ok, known)
+   subroutine read_results_pair(reader, model, pair)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
-      type(deck_line_t), intent(in) :: line
-      character(len=*), intent(in) :: keyword
-      integer, intent(inout) :: position
-      logical, intent(inout) :: ok, known
+      type(keyword_pair_t), intent(inout) :: pair
       type(history_request_t) :: request
       integer :: value
-      select case (keyword)
-      case ('VTK')
-         call reader%take_yes_no(line, position, 'VTK', model%results%vtk, ok)
-      case ('LISTING')
-         call reader%take_yes_no(line, position, 'LISTING', model%results%listing, ok)
-      case ('POS3D')
-         call reader%take_yes_no(line, position, 'POS3D', model%results%pos3d, ok)
-      case ('HDF5')
-         call reader%take_yes_no(line, position, 'HDF5', model%results%hdf5, ok)
-      case ('EVERY')
-         call reader%take_integer(line, position, 'EVERY', value, ok)
-         call require(reader, ok, value >= 1, line, position - 1, 'EVERY must be at least 1')
-         if (ok) model%results%every = value
-      case ('HISTORY')
-         call read_history(reader, line, position, request, ok)
-         if (ok) model%results%history = [model%results%history, request]
-      case default
-         known = .false.
-      end select
+      associate (line => pair%line, position => pair%position, ok => pair%ok)
+         select case (pair%keyword)
+         case ('VTK')
+            call reader%take_yes_no(line, position, 'VTK', model%results%vtk, ok)
+         case ('LISTING')
+            call reader%take_yes_no(line, position, 'LISTING', model%results%listing, ok)
+         case ('POS3D')
+            call reader%take_yes_no(line, position, 'POS3D', model%results%pos3d, ok)
+         case ('HDF5')
+            call reader%take_yes_no(line, position, 'HDF5', model%results%hdf5, ok)
+         case ('EVERY')
+            call reader%take_integer(line, position, 'EVERY', value, ok)
+            call require(reader, ok, value >= 1, line, position - 1, 'EVERY must be at least 1')
+            if (ok) model%results%every = value
+         case ('HISTORY')
+            call read_history(reader, line, position, request, ok)
+            if (ok) model%results%history = [model%results%history, request]
+         case default
+            pair%known = .false.
+         end select
+      end associate
    end subroutine read_results_pair
 
    !> `HISTORY NODE <id> DOF <1-3> [KIND U|R]` (after HISTORY).

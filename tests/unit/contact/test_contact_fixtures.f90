@@ -5,6 +5,7 @@ module test_contact_fixtures
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_coulomb_friction, only: new_coulomb_friction
+   use frix_penalty_normal_law, only: new_penalty_normal_law
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, patch_normals, &
                                   smooth_normal_at
@@ -38,7 +39,7 @@ contains
    function make_parameters(coefficient) result(parameters)
       real(dp), intent(in) :: coefficient
       type(contact_parameters_t) :: parameters
-      parameters%normal_penalty = 1.0e4_dp
+      allocate (parameters%normal, source=new_penalty_normal_law(1.0e4_dp))
       parameters%tangential_penalty = 1.0e3_dp
       parameters%gap_tolerance = 1.0e-4_dp
       allocate (parameters%friction, source=new_coulomb_friction(coefficient))

@@ -10,6 +10,7 @@ module test_friction_law_registry
    use frix_coulomb_friction, only: coulomb_friction_t
    use frix_friction_law_registry, only: create_friction_law
    use frix_contact_parameters, only: contact_parameters_t, new_contact_parameters
+   use frix_penalty_normal_law, only: new_penalty_normal_law
    implicit none
    private
 
@@ -117,19 +118,18 @@ contains
       character(len=2) :: no_names(0)
       real(dp) :: no_values(0)
       call create_friction_law('COULOMB', ['MU'], [0.5_dp], law, failure)
-      call new_contact_parameters(1.0e8_dp, 1.0e6_dp, 1.0e-4_dp, law, parameters, failure)
-      call check(error, .not. allocated(failure) .and. parameters%normal_penalty == 1.0e8_dp .and. &
+      call new_contact_parameters(new_penalty_normal_law(1.0e8_dp), 1.0e6_dp, 1.0e-4_dp, law, parameters, failure)
+      call check(error, .not. allocated(failure) .and. parameters%normal%stiffness() == 1.0e8_dp .and. &
                  allocated(parameters%friction), 'valid parameters')
       if (allocated(error)) return
-      call new_contact_parameters(0.0_dp, 0.0_dp, -1.0_dp, law, parameters, failure)
-      call check_message_contains(error, failure, 'EPSN must be > 0')
-      if (allocated(error)) return
+      ! EPSN is the penalty law's, validated by the normal law registry (test_normal_contact_law)
+      call new_contact_parameters(new_penalty_normal_law(1.0e8_dp), 0.0_dp, -1.0_dp, law, parameters, failure)
       call check_message_contains(error, failure, 'EPST must be > 0')
       if (allocated(error)) return
       call check_message_contains(error, failure, 'gap tolerance must be >= 0')
       if (allocated(error)) return
       call create_friction_law('FRICTIONLESS', no_names, no_values, law, failure)
-      call new_contact_parameters(1.0e8_dp, 0.0_dp, 0.0_dp, law, parameters, failure)
+      call new_contact_parameters(new_penalty_normal_law(1.0e8_dp), 0.0_dp, 0.0_dp, law, parameters, failure)
       call check(error, .not. allocated(failure), 'frictionless needs no EPST')
    end subroutine test_parameters
 end module test_friction_law_registry

@@ -1,0 +1,54 @@
+!> The normal contact law interface: the contact pressure of a slave node from its normal gap.
+!>
+!> Sign conventions (docs/contact.md): the normal gap g (length) is negative in penetration;
+!> the pressure p_N (force per unit area) is compressive positive, p_N >= 0. The law may use a
+!> per-node Lagrange multiplier lambda (force per unit area, an estimate of p_N held fixed
+!> during the Newton iterations of an increment), which a penalty law ignores and an augmented
+!> Lagrangian law uses (p_N = max(0, lambda + eps_N (-g)), lambda updated between
+!> augmentations: Simo & Laursen, Comput. Struct. 42 (1992) 97-116; Wriggers, *Computational
+!> Contact Mechanics*, 2nd ed., Springer 2006, ch. 6).
+!> The gap is a dual number so that the kernel differentiates p_N exactly; lambda is a real
+!> (it does not depend on the current coordinates).
+module frix_normal_contact_law
+   use frix_kinds, only: dp
+   use frix_dual_number, only: dual_t
+   implicit none
+   private
+
+   public :: normal_contact_law_t
+
+   type, abstract :: normal_contact_law_t
+      character(len=:), allocatable :: name   !! deck keyword of the law (METHOD), e.g. PENALTY
+   contains
+      !> Whether the point is in contact, i.e. carries a pressure p_N > 0, at gap g and
+      !> multiplier lambda; where it is not, the kernel adds no force and no stiffness.
+      procedure(active_interface), deferred :: active
+      !> p_N(g, lambda) >= 0 (force/area) with its derivatives through g.
+      procedure(pressure_interface), deferred :: pressure
+      !> d p_N / d(-g) in contact (force/area/length): the normal stiffness per unit area that
+      !> the assembly gives touching nodes (0 <= g <= GAPTOL) in the predictor.
+      procedure(stiffness_interface), deferred :: stiffness
+   end type normal_contact_law_t
+
+   abstract interface
+      pure logical function active_interface(self, gap, multiplier)
+         import :: normal_contact_law_t, dp
+         class(normal_contact_law_t), intent(in) :: self
+         real(dp), intent(in) :: gap          !! g (length), < 0: penetration
+         real(dp), intent(in) :: multiplier   !! lambda (force/area)
+      end function active_interface
+
+      pure function pressure_interface(self, gap, multiplier) result(pressure)
+         import :: normal_contact_law_t, dual_t, dp
+         class(normal_contact_law_t), intent(in) :: self
+         type(dual_t), intent(in) :: gap      !! g (length) and its gradient
+         real(dp), intent(in) :: multiplier   !! lambda (force/area)
+         type(dual_t) :: pressure             !! p_N >= 0 (force/area), compressive positive
+      end function pressure_interface
+
+      pure real(dp) function stiffness_interface(self)
+         import :: normal_contact_law_t, dp
+         class(normal_contact_law_t), intent(in) :: self
+      end function stiffness_interface
+   end interface
+end module frix_normal_contact_law
