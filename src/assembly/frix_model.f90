@@ -115,7 +115,7 @@ module frix_model
       integer :: master_surface = 0         !! index into model%mesh%surfaces; 0: rigid plane
       real(dp) :: plane_point(3) = 0.0_dp   !! rigid plane: a point of it
       real(dp) :: plane_normal(3) = 0.0_dp  !! rigid plane: unit normal out of the rigid body
-      type(contact_parameters_t) :: parameters  !! EPSN, EPST, gap tolerance, friction law
+      type(contact_parameters_t) :: parameters  !! normal contact law (METHOD, EPSN), EPST, gap tolerance, friction law
       integer :: passes = 1                 !! 2: also the master's nodes against the slave's faces
       integer :: line = 0                   !! deck line
    end type contact_pair_t
