@@ -121,7 +121,8 @@ foreach(script plot_history plot_line render_mesh mohr_coulomb)
 endforeach()
 
 # Contact benchmarks (labels regression;contact, heavier ones also slow).
-foreach(case contact_s1/s1 contact_s4/s4 contact_s4/s4_tl contact_v5v6/v5v6 contact_s3/s3)
+foreach(case contact_s1/s1 contact_s4/s4 contact_s4/s4_tl contact_v5v6/v5v6 contact_s3/s3
+             contact_s5/s5)
   include(${CMAKE_CURRENT_SOURCE_DIR}/${case}.cmake OPTIONAL)
 endforeach()
 
