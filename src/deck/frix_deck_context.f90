@@ -20,7 +20,7 @@ module frix_deck_context
              s_results, s_contact, s_end
 
    integer, parameter :: name_length = 20
-   !> Known sections; their index is the processing order (see the module comment).
+   !> Known sections (the order of reading is read_deck's, frix_deck_reader).
    character(len=name_length), parameter :: deck_section_names(17) = [character(len=name_length) :: &
       'PROBLEM TYP', 'STATIC', 'LOAD CURVES', 'MATERIALS', 'MESH FILE', 'NODE COORDS', &
       'STRUCTURE ELEMENTS', 'MESH BLOCK', 'NODE SETS', 'SURFACES', 'DIRICHLET CONDITIONS', &
@@ -242,7 +242,7 @@ contains
    end subroutine take_number
 
    !> The value of the registered property `spec` at token `position`, checked against the
-   !> spec's bound and set in `list` (the last value given wins).
+   !> spec's bound and added to `list`; a property given twice on the line is reported.
    subroutine take_property(self, line, position, spec, list, ok)
       class(deck_reader_t), intent(inout) :: self
       type(deck_line_t), intent(in) :: line
@@ -251,6 +251,12 @@ contains
       type(property_list_t), intent(inout) :: list
       logical, intent(inout) :: ok
       real(dp) :: value
+      if (ok .and. list%count() > 0) then
+         if (any(list%names == spec%name)) then
+            call self%report(line, position - 1, trim(spec%name)//' given twice on this line')
+            ok = .false.
+         end if
+      end if
       call self%take_number(line, position, trim(spec%what), spec%whole, value, ok)
       call require(self, ok, spec%admits(value), line, position - 1, trim(spec%bound_message))
       if (ok) call list%set(spec%name, value)
