@@ -28,7 +28,7 @@ module frix_contact_assembly
    use frix_face_projection, only: face_normal, face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
                                   contact_open, contact_slip
-   use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of, largest_patch_ring
+   use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of
    use frix_contact_pass, only: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, &
                                 start_pass_state, kernel_nodes
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
@@ -40,7 +40,7 @@ module frix_contact_assembly
    public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
    public :: contact_history_rows, get_contact_history, set_contact_history
-   public :: reset_friction_branches, release_inconsistent_branches, largest_patch_ring
+   public :: reset_friction_branches, release_inconsistent_branches
 
    type :: contact_system_t
       type(contact_pass_t), allocatable :: passes(:)

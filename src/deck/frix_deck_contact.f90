@@ -14,7 +14,7 @@ module frix_deck_contact
                                                default_normal_method
    use frix_contact_parameters, only: new_contact_parameters
    use frix_contact_kernel, only: max_ring_nodes
-   use frix_contact_assembly, only: largest_patch_ring
+   use frix_contact_patches, only: largest_patch_ring
    use frix_model, only: model_t, contact_pair_t
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, require, s_contact

@@ -30,7 +30,6 @@ module frix_deck_context
                          s_node_sets = 9, s_surfaces = 10, s_dirichlet = 11, s_neumann = 12, &
                          s_body_force = 13, s_steps = 14, s_results = 15, s_contact = 16, s_end = 17
 
-
    !> Relative tolerance of BOX selections, times the diagonal of the model's bounding box.
    real(dp), parameter :: box_tolerance = 1.0e-9_dp
 
@@ -88,7 +87,6 @@ module frix_deck_context
       procedure :: take_choice
       procedure :: take_node_target
    end type deck_reader_t
-
 
    !> One pair of a keyword/value section as its pair reader gets it: the deck line, the pair's
    !> keyword (upper case) and the token after it. The pair reader reads the value(s) from
@@ -445,8 +443,6 @@ contains
       end do
    end subroutine mark_nodes
 
-
-
    !> `NODE <id> DOF <1-3>`: the internal node number and the component.
    subroutine read_node_dof(reader, line, position, node, component, ok)
       type(deck_reader_t), intent(inout) :: reader
@@ -499,7 +495,6 @@ contains
       tokens = [tokens, spread(token, 1, n - n_old)]
    end subroutine extend_origins
 
-
    !> Value of integer token `i` known to be valid.
    integer function line_integer(line, i) result(value)
       type(deck_line_t), intent(in) :: line
@@ -508,7 +503,6 @@ contains
       character(len=:), allocatable :: message
       call parse_integer(line%token(i), value, ok, message)
    end function line_integer
-
 
    subroutine extend_properties(reader, n)
       type(deck_reader_t), intent(inout) :: reader

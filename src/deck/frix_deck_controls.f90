@@ -120,7 +120,6 @@ contains
       end if
    end subroutine read_friction_continuation
 
-
    ! ---- LOAD CURVES ----------------------------------------------------------------------
 
    !> `CURVE <id> POINTS t1 f1 t2 f2 ...`: at least two points, times strictly increasing.

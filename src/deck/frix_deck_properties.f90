@@ -90,7 +90,6 @@ contains
       model%material_ids = ids(1:n_materials)
    end subroutine read_materials
 
-
    !> `<id> SOLID <shape> n1 .. nk MAT <m> [<option> <value> ...] [KINTYP Geo_Lin|Tot_Lagr]`, k
    !> and the options as the element registry gives them (SET lines are read later, by
    !> read_element_set_lines).
@@ -239,6 +238,7 @@ contains
       candidate%line = line%number
       call read_property_pairs(reader, model, line, position, shape, candidate, ok)
       if (.not. ok) return
+      call name_formulation(candidate)
       property = find_property(reader, candidate)
       if (property > 0) return
       call append_property(reader%properties, candidate)
@@ -289,17 +289,22 @@ contains
       end if
    end subroutine read_property_pairs
 
-   !> The property equal to `candidate` (same shape, kinematics, material and formulation, or
-   !> the same options where the formulation is invalid), 0 if none; `candidate%formulation`
-   !> is set.
-   integer function find_property(reader, candidate) result(property)
-      type(deck_reader_t), intent(in) :: reader
+   !> `candidate%formulation`: the name of the element its shape, options and kinematics make,
+   !> empty when they make none (the options are then compared instead).
+   subroutine name_formulation(candidate)
       type(property_t), intent(inout) :: candidate
       class(element_t), allocatable :: element
       type(error_t), allocatable :: error
       call create_element(candidate%shape, candidate%options, candidate%kinematics, element, error)
       candidate%formulation = ''
       if (.not. allocated(error)) candidate%formulation = element%name
+   end subroutine name_formulation
+
+   !> The property equal to `candidate` (same shape, kinematics, material and formulation, or
+   !> the same options where the formulation is invalid), 0 if none.
+   integer function find_property(reader, candidate) result(property)
+      type(deck_reader_t), intent(in) :: reader
+      type(property_t), intent(in) :: candidate
       do property = 1, reader%n_properties
          associate (p => reader%properties(property))
             if (p%shape /= candidate%shape .or. p%kinematics /= candidate%kinematics .or. &

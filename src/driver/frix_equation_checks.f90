@@ -30,7 +30,6 @@ contains
                 equation_label(model, equation)
    end subroutine check_finite
 
-
    !> check_finite for the tangent matrix: names the column (equation) of the first
    !> non-finite entry.
    subroutine check_finite_tangent(model, matrix, failure)
@@ -48,7 +47,6 @@ contains
                 equation_label(model, column)
    end subroutine check_finite_tangent
 
-
    !> Name the node and direction where the factorization broke down.
    subroutine describe_singularity(model, equation, error)
       type(model_t), intent(in) :: model
@@ -61,7 +59,6 @@ contains
                       ': is that part of the model held against rigid-body motion, or is the load '// &
                       'beyond what it can carry (a limit load, a collapse mechanism)?'
    end subroutine describe_singularity
-
 
    !> 'node <user id>, direction x|y|z' of global equation `equation` (node-major, 3 per node).
    function equation_label(model, equation) result(text)

@@ -50,7 +50,6 @@ contains
       end subroutine grow_integer
    end subroutine reserve_iteration_log
 
-
    subroutine print_progress(label, time, iteration, residual_norm, relative_norm, energy, &
                              contact, active, slipping)
       character(len=*), intent(in) :: label
@@ -68,7 +67,6 @@ contains
       end if
       flush (6)
    end subroutine print_progress
-
 
    !> A norm in 10 characters, es10.3 (" 1.234E-05"), or es10.3e3 ("1.234E+120") when the
    !> exponent has three digits (es10.3 would drop the letter E: "1.234+120").
