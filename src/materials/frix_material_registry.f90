@@ -88,7 +88,7 @@ contains
          call table(i)%create(named, material, error)
       else
          call fatal_error(error, 'unknown material law "'//trim(adjustl(keyword))// &
-                          '"; valid laws: '//joined(table%keyword))
+                          '"; valid laws: '//joined([table%keyword]))
       end if
    end subroutine create_material_from_list
 

@@ -33,7 +33,7 @@ module frix_von_mises_plastic
    implicit none
    private
 
-   public :: von_mises_plastic_t, von_mises_from_properties, new_von_mises_plastic
+   public :: von_mises_plastic_t, von_mises_from_properties, init_von_mises_plastic
    public :: state_eqps, state_yielded, state_plastic_strain, state_back_stress
 
    integer, parameter :: state_eqps = 1                 !! alpha
@@ -63,18 +63,20 @@ module frix_von_mises_plastic
 
 contains
 
-   pure function new_von_mises_plastic(young, poisson, density, hardening, kinematic_modulus) result(material)
+   !> Set `material` (filled in place: gfortran 12 leaks the hardening table of a function
+   !> result copied into a polymorphic allocation).
+   pure subroutine init_von_mises_plastic(material, young, poisson, density, hardening, kinematic_modulus)
+      type(von_mises_plastic_t), intent(out) :: material
       real(dp), intent(in) :: young, poisson, density
       type(hardening_t), intent(in) :: hardening
       real(dp), intent(in) :: kinematic_modulus
-      type(von_mises_plastic_t) :: material
       material%name = 'MAT_3DMisesPlastic'
       material%young = young
       material%poisson = poisson
       material%density = density
       material%hardening = hardening
       material%kinematic_modulus = kinematic_modulus
-   end function new_von_mises_plastic
+   end subroutine init_von_mises_plastic
 
    !> The law of deck properties YOUNG NUE DENS (elastic_constants), the hardening's
    !> (read_hardening) and KINH (>= 0, default 0).
@@ -106,8 +108,12 @@ contains
       call properties%take_real('KINH', kinematic, found, error, default=0.0_dp)
       if (.not. (kinematic >= 0.0_dp .and. kinematic < huge(1.0_dp))) &
          call append_error(error, trim(properties%owner)//': KINH must be >= 0, got '//to_string(kinematic))
-      if (.not. allocated(error)) &
-         allocate (material, source=new_von_mises_plastic(young, poisson, density, hardening, kinematic))
+      if (allocated(error)) return
+      allocate (von_mises_plastic_t :: material)
+      select type (material)
+      type is (von_mises_plastic_t)
+         call init_von_mises_plastic(material, young, poisson, density, hardening, kinematic)
+      end select
    end subroutine von_mises_from_properties
 
    pure function von_mises_n_state(self) result(n)

@@ -9,7 +9,7 @@ module test_von_mises
    use frix_material, only: material_t
    use frix_property_list, only: property_list_t, new_property_list
    use frix_hardening, only: hardening_t, read_hardening
-   use frix_von_mises_plastic, only: new_von_mises_plastic, state_eqps, state_yielded, state_back_stress
+   use frix_von_mises_plastic, only: von_mises_plastic_t, init_von_mises_plastic, state_eqps, state_yielded, state_back_stress
    use frix_linear_elastic, only: hooke_tangent
    use test_material_checks, only: check_tangent_by_differences, material_response, check_matrix_close
    implicit none
@@ -38,11 +38,11 @@ contains
    end subroutine collect_von_mises
 
    !> The law with hardening properties `names` = `values` (beside YOUNG, NUE).
-   function steel(names, values, kinematic) result(material)
+   subroutine make_steel(material, names, values, kinematic)
+      type(von_mises_plastic_t), intent(out) :: material
       character(len=*), intent(in) :: names(:)
       real(dp), intent(in) :: values(:)
       real(dp), intent(in), optional :: kinematic
-      class(material_t), allocatable :: material
       type(property_list_t) :: properties
       type(hardening_t) :: hardening
       type(error_t), allocatable :: error
@@ -52,13 +52,14 @@ contains
       if (allocated(error)) error stop 'test_von_mises: invalid hardening'
       kinematic_modulus = 0.0_dp
       if (present(kinematic)) kinematic_modulus = kinematic
-      allocate (material, source=new_von_mises_plastic(young, poisson, 0.0_dp, hardening, kinematic_modulus))
-   end function steel
+      call init_von_mises_plastic(material, young, poisson, 0.0_dp, hardening, kinematic_modulus)
+   end subroutine make_steel
 
-   function linear_steel() result(material)
-      class(material_t), allocatable :: material
-      material = steel([character(len=4) :: 'SIGY', 'HARD'], [yield, hard])
-   end function linear_steel
+   !> Linear isotropic hardening, SIGY 420, HARD 75000.
+   subroutine make_linear_steel(material)
+      type(von_mises_plastic_t), intent(out) :: material
+      call make_steel(material, [character(len=4) :: 'SIGY', 'HARD'], [yield, hard])
+   end subroutine make_linear_steel
 
    !> Uniaxial stress at axial strain `axial`: the lateral strains e22 = e33 solved so that
    !> sigma_22 = sigma_33 = 0 by Newton with the law's tangent (strain-driven, mixed control).
@@ -86,10 +87,10 @@ contains
 
    subroutine test_uniaxial(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: material
+      type(von_mises_plastic_t) :: material
       real(dp) :: state(n_state), stress(6), strain, tangent_modulus, expected
       integer :: k
-      material = linear_steel()
+      call make_linear_steel(material)
       state = 0.0_dp
       tangent_modulus = young*hard/(young + hard)
       do k = 1, 20
@@ -109,10 +110,10 @@ contains
    !> docs/materials.md from |s| = sqrt(2) tau = sqrt(2/3) K(alpha), alpha = gamma_p/sqrt(3)).
    subroutine test_shear(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: material
+      type(von_mises_plastic_t) :: material
       real(dp) :: state(n_state), new(n_state), stress(6), tangent(6, 6), gamma, gamma_p, tau
       integer :: k
-      material = linear_steel()
+      call make_linear_steel(material)
       gamma = 0.02_dp
       gamma_p = (mu*gamma - yield/sqrt(3.0_dp))/(mu + hard/3.0_dp)
       tau = mu*(gamma - gamma_p)
@@ -137,9 +138,9 @@ contains
 
    subroutine test_large_step(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: material
+      type(von_mises_plastic_t) :: material
       real(dp) :: state(n_state), new(n_state), stress(6), tangent(6, 6), strain(6), deviator(6), radius
-      material = steel([character(len=6) :: 'SIGY', 'SIGINF', 'DELTA'], [yield, 600.0_dp, 20.0_dp])
+      call make_steel(material, [character(len=6) :: 'SIGY', 'SIGINF', 'DELTA'], [yield, 600.0_dp, 20.0_dp])
       strain = 100.0_dp*yield/young*[1.0_dp, -0.3_dp, 0.2_dp, 0.5_dp, -0.7_dp, 0.4_dp]
       state = 0.0_dp
       call material_response(error, material, strain, stress, tangent, .false., state, new)
@@ -155,9 +156,9 @@ contains
 
    subroutine test_unloading(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: material
+      type(von_mises_plastic_t) :: material
       real(dp) :: state(n_state), new(n_state), loaded(6), unloaded(6), tangent(6, 6), strain(6), step(6)
-      material = linear_steel()
+      call make_linear_steel(material)
       strain = 5.0_dp*yield/young*[1.0_dp, -0.2_dp, 0.1_dp, 0.3_dp, 0.0_dp, -0.2_dp]
       state = 0.0_dp
       call material_response(error, material, strain, loaded, tangent, .false., state, new)
@@ -180,10 +181,10 @@ contains
    !> hardening of the same H it is -(sy + H eps_p).
    subroutine test_bauschinger(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: kinematic, isotropic
+      type(von_mises_plastic_t) :: kinematic, isotropic
       real(dp) :: state_k(n_state), state_i(n_state), stress(6), plastic
-      kinematic = steel([character(len=4) :: 'SIGY'], [yield], kinematic=hard)
-      isotropic = linear_steel()
+      call make_steel(kinematic, [character(len=4) :: 'SIGY'], [yield], kinematic=hard)
+      call make_linear_steel(isotropic)
       state_k = 0.0_dp
       state_i = 0.0_dp
       call uniaxial(error, kinematic, 0.01_dp, state_k, stress, .false.)
@@ -212,11 +213,11 @@ contains
    !> Uniaxial stress sigma = K(eps_p) with eps = eps_p + sigma/E: saturation and a table.
    subroutine test_nonlinear_uniaxial(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: saturation, table
+      type(von_mises_plastic_t) :: saturation, table
       real(dp) :: state(n_state), stress(6), plastic, expected
       integer :: k
-      saturation = steel([character(len=6) :: 'SIGY', 'HARD', 'SIGINF', 'DELTA'], [yield, 1000.0_dp, 600.0_dp, 20.0_dp])
-      table = steel([character(len=5) :: 'SIGY', 'EPSP1', 'SIGY1', 'EPSP2', 'SIGY2'], &
+      call make_steel(saturation, [character(len=6) :: 'SIGY', 'HARD', 'SIGINF', 'DELTA'], [yield, 1000.0_dp, 600.0_dp, 20.0_dp])
+      call make_steel(table, [character(len=5) :: 'SIGY', 'EPSP1', 'SIGY1', 'EPSP2', 'SIGY2'], &
                     [yield, 0.01_dp, 500.0_dp, 0.05_dp, 540.0_dp])
       state = 0.0_dp
       do k = 1, 30
@@ -287,11 +288,11 @@ contains
    !> logarithm's divided differences take their confluent limits.
    subroutine test_tangent_finite(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: material
+      type(von_mises_plastic_t) :: material
       real(dp) :: state(n_state), new(n_state), stress(6), tangent(6, 6)
       call each_hardening(error, .true.)
       if (allocated(error)) return
-      material = steel([character(len=6) :: 'SIGY', 'SIGINF', 'DELTA'], [yield, 600.0_dp, 20.0_dp], kinematic=hard)
+      call make_steel(material, [character(len=6) :: 'SIGY', 'SIGINF', 'DELTA'], [yield, 600.0_dp, 20.0_dp], kinematic=hard)
       state = 0.0_dp
       call material_response(error, material, [0.3_dp, -0.1_dp, -0.12_dp, 0.2_dp, 0.05_dp, -0.1_dp], stress, &
                              tangent, .true., state, new)
@@ -309,18 +310,21 @@ contains
    subroutine each_hardening(error, finite)
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in) :: finite
-      call tangent_states(error, linear_steel(), finite, 'linear')
+      type(von_mises_plastic_t) :: material
+      call make_linear_steel(material)
+      call tangent_states(error, material, finite, 'linear')
       if (allocated(error)) return
-      call tangent_states(error, steel([character(len=4) :: 'SIGY'], [yield]), finite, 'perfectly plastic')
+      call make_steel(material, [character(len=4) :: 'SIGY'], [yield])
+      call tangent_states(error, material, finite, 'perfectly plastic')
       if (allocated(error)) return
-      call tangent_states(error, steel([character(len=6) :: 'SIGY', 'SIGINF', 'DELTA'], [yield, 600.0_dp, 20.0_dp]), &
-                          finite, 'saturation')
+      call make_steel(material, [character(len=6) :: 'SIGY', 'SIGINF', 'DELTA'], [yield, 600.0_dp, 20.0_dp])
+      call tangent_states(error, material, finite, 'saturation')
       if (allocated(error)) return
-      call tangent_states(error, steel([character(len=5) :: 'SIGY', 'EPSP1', 'SIGY1'], [yield, 0.5_dp, 900.0_dp]), &
-                          finite, 'table')
+      call make_steel(material, [character(len=5) :: 'SIGY', 'EPSP1', 'SIGY1'], [yield, 0.5_dp, 900.0_dp])
+      call tangent_states(error, material, finite, 'table')
       if (allocated(error)) return
-      call tangent_states(error, steel([character(len=4) :: 'SIGY', 'HARD'], [yield, 2000.0_dp], kinematic=hard), &
-                          finite, 'kinematic')
+      call make_steel(material, [character(len=4) :: 'SIGY', 'HARD'], [yield, 2000.0_dp], kinematic=hard)
+      call tangent_states(error, material, finite, 'kinematic')
    end subroutine each_hardening
 
    !> Uniaxial stress at stretch lambda: in the principal axes T = tau (Kirchhoff stress) and
@@ -328,10 +332,10 @@ contains
    !> J2 flow in log strain; Miehe, Apel & Lambrecht 2002); S_11 = tau_11 / lambda^2.
    subroutine test_finite_uniaxial(error)
       type(error_t), allocatable, intent(out) :: error
-      class(material_t), allocatable :: material
+      type(von_mises_plastic_t) :: material
       real(dp) :: state(n_state), stress(6), stretch, green, log_strain, expected
       integer :: k
-      material = linear_steel()
+      call make_linear_steel(material)
       state = 0.0_dp
       do k = 1, 10
          stretch = 1.0_dp + 0.03_dp*k
