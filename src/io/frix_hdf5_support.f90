@@ -1,5 +1,6 @@
 !> Checked wrappers around the HDF5 1.10 Fortran API used by the results file
-!> (`frix_hdf5_results`): every HDF5 return code is tested and a failure becomes an `error_t`
+!> (`frix_hdf5_file`, `frix_hdf5_results`, `frix_hdf5_restart`): groups, datasets and
+!> attributes. Every HDF5 return code is tested and a failure becomes an `error_t`
 !> naming the file and the object ("HDF5: cannot <action> "<object>" in "<file>"").
 !>
 !> Arrays are written in Fortran (column-major) order with the Fortran shape reversed in the
@@ -9,7 +10,7 @@
 !> NUL-terminated C strings (h5py returns them as `bytes`).
 !> Empty arrays (a zero extent) are stored as datasets with a zero dimension and no data.
 module frix_hdf5_support
-   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr, c_null_char, c_f_pointer, c_signed_char, c_size_t
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
@@ -38,11 +39,13 @@ module frix_hdf5_support
    end type hdf5_location_t
 
    !> Write a dataset `name` below a location: real(dp) of rank 1-3, default integer of rank 1-2.
+   !> (A non-contiguous actual argument is copied in first.)
    interface write_dataset
       module procedure write_real_1, write_real_2, write_real_3, write_integer_1, write_integer_2
    end interface write_dataset
 
-   !> Read a dataset whose Fortran shape must equal the shape of the (already sized) array.
+   !> Read a dataset whose Fortran shape must equal the shape of the (already sized) array;
+   !> the array is left unchanged on error.
    interface read_dataset
       module procedure read_real_1, read_real_2, read_real_3, read_integer_2
    end interface read_dataset
@@ -215,51 +218,41 @@ contains
    subroutine write_real_1(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      real(dp), intent(in) :: values(:)
+      real(dp), intent(in), target, contiguous :: values(:)
       type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable, target :: buffer(:)
-      allocate (buffer, source=values)
-      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(values), error)
    end subroutine write_real_1
 
    subroutine write_real_2(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      real(dp), intent(in) :: values(:, :)
+      real(dp), intent(in), target, contiguous :: values(:, :)
       type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable, target :: buffer(:, :)
-      allocate (buffer, source=values)
-      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(values), error)
    end subroutine write_real_2
 
    subroutine write_real_3(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      real(dp), intent(in) :: values(:, :, :)
+      real(dp), intent(in), target, contiguous :: values(:, :, :)
       type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable, target :: buffer(:, :, :)
-      allocate (buffer, source=values)
-      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
+      call write_raw(parent, name, h5t_native_double, shape(values), c_loc(values), error)
    end subroutine write_real_3
 
    subroutine write_integer_1(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      integer, intent(in) :: values(:)
+      integer, intent(in), target, contiguous :: values(:)
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable, target :: buffer(:)
-      allocate (buffer, source=values)
-      call write_raw(parent, name, h5t_native_integer, shape(values), c_loc(buffer), error)
+      call write_raw(parent, name, h5t_native_integer, shape(values), c_loc(values), error)
    end subroutine write_integer_1
 
    subroutine write_integer_2(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      integer, intent(in) :: values(:, :)
+      integer, intent(in), target, contiguous :: values(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable, target :: buffer(:, :)
-      allocate (buffer, source=values)
-      call write_raw(parent, name, h5t_native_integer, shape(values), c_loc(buffer), error)
+      call write_raw(parent, name, h5t_native_integer, shape(values), c_loc(values), error)
    end subroutine write_integer_2
 
    !> Fortran shape of dataset `name` below `parent` (the reverse of what h5py shows).
@@ -306,49 +299,73 @@ contains
       if (status == 0) status = close_status
    end subroutine shape_of_open_dataset
 
-   !> Open dataset `name`, check that its Fortran shape is `expected`, read it into `buffer`.
-   subroutine read_raw(parent, name, type_id, expected, buffer, error)
+   !> Open dataset `name`, check that its Fortran shape is `expected`, read it into the array
+   !> at `values` (elements of `element_bytes` bytes), which is left unchanged on error.
+   subroutine read_raw(parent, name, type_id, expected, element_bytes, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
       integer(hid_t), intent(in) :: type_id
       integer, intent(in) :: expected(:)
-      type(c_ptr), intent(in) :: buffer
+      integer, intent(in) :: element_bytes
+      type(c_ptr), intent(in) :: values
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: dataset
-      type(c_ptr) :: destination
-      integer, allocatable :: found(:)
       integer :: status, close_status
       call h5dopen_f(parent%id, name, dataset, status)
       if (status /= 0) then
          call hdf5_failure(error, 'open dataset', parent, name)
          return
       end if
-      call shape_of_open_dataset(dataset, found, status)
-      if (status /= 0) then
-         call h5dclose_f(dataset, close_status)
-         call hdf5_failure(error, 'query the shape of dataset', parent, name)
-         return
-      end if
-      if (size(found) /= size(expected)) then
-         call h5dclose_f(dataset, close_status)
-         call fatal_error(error, 'HDF5: dataset "'//child_path(parent, name)//'" in "'//parent%file_path// &
-                          '" has rank '//to_string(size(found))//', expected '//to_string(size(expected)))
-         return
-      end if
-      if (any(found /= expected)) then
-         call h5dclose_f(dataset, close_status)
-         call fatal_error(error, 'HDF5: dataset "'//child_path(parent, name)//'" in "'//parent%file_path// &
-                          '" has shape '//shape_text(found)//', the current model needs '//shape_text(expected)// &
-                          ' (shapes in h5py order)')
-         return
-      end if
-      status = 0
-      destination = buffer   ! h5dread_f wants an intent(inout) C pointer
-      if (product(expected) > 0) call h5dread_f(dataset, type_id, destination, status)
+      call check_read_shape(parent, name, dataset, expected, error)
+      if (.not. allocated(error)) &
+         call read_open_dataset(dataset, type_id, int(product(expected), c_size_t)*element_bytes, values, status)
       call h5dclose_f(dataset, close_status)
+      if (allocated(error)) return
       if (status == 0) status = close_status
       if (status /= 0) call hdf5_failure(error, 'read dataset', parent, name)
    end subroutine read_raw
+
+   !> Error unless the open dataset `name` has the Fortran shape `expected`.
+   subroutine check_read_shape(parent, name, dataset, expected, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: dataset
+      integer, intent(in) :: expected(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: found(:)
+      integer :: status
+      call shape_of_open_dataset(dataset, found, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'query the shape of dataset', parent, name)
+      else if (size(found) /= size(expected)) then
+         call fatal_error(error, 'HDF5: dataset "'//child_path(parent, name)//'" in "'//parent%file_path// &
+                          '" has rank '//to_string(size(found))//', expected '//to_string(size(expected)))
+      else if (any(found /= expected)) then
+         call fatal_error(error, 'HDF5: dataset "'//child_path(parent, name)//'" in "'//parent%file_path// &
+                          '" has shape '//shape_text(found)//', the current model needs '//shape_text(expected)// &
+                          ' (shapes in h5py order)')
+      end if
+   end subroutine check_read_shape
+
+   !> Read all `n_bytes` of an open dataset as `type_id` into a buffer, and copy them to
+   !> `values` only if the read succeeds (`status` 0).
+   subroutine read_open_dataset(dataset, type_id, n_bytes, values, status)
+      integer(hid_t), intent(in) :: dataset, type_id
+      integer(c_size_t), intent(in) :: n_bytes
+      type(c_ptr), intent(in) :: values
+      integer, intent(out) :: status
+      integer(c_signed_char), allocatable, target :: buffer(:)
+      integer(c_signed_char), pointer :: destination(:)
+      type(c_ptr) :: buffer_address
+      status = 0
+      if (n_bytes == 0) return
+      allocate (buffer(n_bytes))
+      buffer_address = c_loc(buffer)   ! h5dread_f wants an intent(inout) C pointer
+      call h5dread_f(dataset, type_id, buffer_address, status)
+      if (status /= 0) return
+      call c_f_pointer(values, destination, [n_bytes])
+      destination = buffer
+   end subroutine read_open_dataset
 
    !> "(n1, n2, ...)" in h5py (C) order, i.e. the Fortran shape reversed.
    pure function shape_text(fortran_shape) result(text)
@@ -366,45 +383,33 @@ contains
    subroutine read_real_1(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      real(dp), intent(inout) :: values(:)
+      real(dp), intent(inout), target, contiguous :: values(:)
       type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable, target :: buffer(:)
-      allocate (buffer(size(values)))
-      call read_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
-      if (.not. allocated(error)) values = buffer
+      call read_raw(parent, name, h5t_native_double, shape(values), storage_size(values)/8, c_loc(values), error)
    end subroutine read_real_1
 
    subroutine read_real_2(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      real(dp), intent(inout) :: values(:, :)
+      real(dp), intent(inout), target, contiguous :: values(:, :)
       type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable, target :: buffer(:, :)
-      allocate (buffer(size(values, 1), size(values, 2)))
-      call read_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
-      if (.not. allocated(error)) values = buffer
+      call read_raw(parent, name, h5t_native_double, shape(values), storage_size(values)/8, c_loc(values), error)
    end subroutine read_real_2
 
    subroutine read_real_3(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      real(dp), intent(inout) :: values(:, :, :)
+      real(dp), intent(inout), target, contiguous :: values(:, :, :)
       type(error_t), allocatable, intent(out) :: error
-      real(dp), allocatable, target :: buffer(:, :, :)
-      allocate (buffer(size(values, 1), size(values, 2), size(values, 3)))
-      call read_raw(parent, name, h5t_native_double, shape(values), c_loc(buffer), error)
-      if (.not. allocated(error)) values = buffer
+      call read_raw(parent, name, h5t_native_double, shape(values), storage_size(values)/8, c_loc(values), error)
    end subroutine read_real_3
 
    subroutine read_integer_2(parent, name, values, error)
       type(hdf5_location_t), intent(in) :: parent
       character(len=*), intent(in) :: name
-      integer, intent(inout) :: values(:, :)
+      integer, intent(inout), target, contiguous :: values(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable, target :: buffer(:, :)
-      allocate (buffer(size(values, 1), size(values, 2)))
-      call read_raw(parent, name, h5t_native_integer, shape(values), c_loc(buffer), error)
-      if (.not. allocated(error)) values = buffer
+      call read_raw(parent, name, h5t_native_integer, shape(values), storage_size(values)/8, c_loc(values), error)
    end subroutine read_integer_2
 
    !> Create the scalar attribute `name` of `type_id` on `location` and write `buffer`.

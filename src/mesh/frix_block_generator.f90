@@ -119,7 +119,9 @@ contains
          do k = 0, nz - 1
             do j = 0, ny - 1
                do i = 0, nx - 1
-                  if (element_on_side(side, i, j, k, nx, ny, nz)) then
+                  ! element (i, j, k) has a face on a side where it is first or last of its row:
+                  ! the side of the grid of element indices 0..nx-1, 0..ny-1, 0..nz-1
+                  if (on_side(side, i, j, k, nx - 1, ny - 1, nz - 1)) then
                      count = count + 1
                      side_elements(count) = 1 + i + nx*(j + ny*k)
                   end if
@@ -158,23 +160,4 @@ contains
          on_side = k == nz
       end select
    end function on_side
-
-   !> Whether element (i, j, k) has a face on side `side`.
-   pure logical function element_on_side(side, i, j, k, nx, ny, nz)
-      integer, intent(in) :: side, i, j, k, nx, ny, nz
-      select case (side)
-      case (1)
-         element_on_side = i == 0
-      case (2)
-         element_on_side = i == nx - 1
-      case (3)
-         element_on_side = j == 0
-      case (4)
-         element_on_side = j == ny - 1
-      case (5)
-         element_on_side = k == 0
-      case default
-         element_on_side = k == nz - 1
-      end select
-   end function element_on_side
 end module frix_block_generator

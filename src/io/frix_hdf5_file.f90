@@ -1,0 +1,107 @@
+!> The HDF5 results file as a whole (docs/hdf5-layout.md), shared by its writer
+!> (frix_hdf5_results) and its readers (frix_hdf5_restart): creating, opening read-only,
+!> flushing and closing it with checked HDF5 1.10 calls, the layout version, and the names of
+!> the increment groups (/increments/000001, 000002, ...).
+module frix_hdf5_file
+   use frix_error, only: error_t, fatal_error
+   use frix_strings, only: zero_padded
+   use frix_hdf5_support, only: hdf5_location_t, hdf5_initialize
+   use hdf5, only: h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5fis_hdf5_f, &
+                   h5f_acc_trunc_f, h5f_acc_rdonly_f, h5f_scope_global_f
+   implicit none
+   private
+
+   public :: hdf5_layout_version, increment_group_name
+   public :: create_file, open_for_reading, flush_file, close_file
+
+   integer, parameter :: hdf5_layout_version = 1   !! root attribute `layout_version`; bump on incompatible change
+   integer, parameter :: increment_digits = 6       !! increment group names: 000001, 000002, ...
+
+contains
+
+   !> Name of the group of the `number`-th increment written, below /increments.
+   pure function increment_group_name(number) result(name)
+      integer, intent(in) :: number
+      character(len=:), allocatable :: name
+      name = zero_padded(number, increment_digits)
+   end function increment_group_name
+
+   !> Create (or truncate) the results file `path`.
+   subroutine create_file(path, file, error)
+      character(len=*), intent(in) :: path
+      type(hdf5_location_t), intent(inout) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      call hdf5_initialize(error)
+      if (allocated(error)) return
+      call h5fcreate_f(path, h5f_acc_trunc_f, file%id, status)
+      call name_file(path, status, 'create', file, error)
+   end subroutine create_file
+
+   !> Open an existing results file read-only, with distinct messages for a missing file and
+   !> a file that is not HDF5.
+   subroutine open_for_reading(path, file, error)
+      character(len=*), intent(in) :: path
+      type(hdf5_location_t), intent(out) :: file
+      type(error_t), allocatable, intent(out) :: error
+      logical :: exists, is_hdf5
+      integer :: status
+      inquire (file=path, exist=exists)
+      if (.not. exists) then
+         call fatal_error(error, 'HDF5: results file "'//path//'" does not exist')
+         return
+      end if
+      call hdf5_initialize(error)
+      if (allocated(error)) return
+      call h5fis_hdf5_f(path, is_hdf5, status)
+      if (status /= 0) then
+         call fatal_error(error, 'HDF5: cannot read results file "'//path//'"')
+         return
+      end if
+      if (.not. is_hdf5) then
+         call fatal_error(error, 'HDF5: "'//path//'" is not an HDF5 file')
+         return
+      end if
+      call h5fopen_f(path, h5f_acc_rdonly_f, file%id, status)
+      call name_file(path, status, 'open', file, error)
+   end subroutine open_for_reading
+
+   !> After h5fcreate_f or h5fopen_f returned `status`: the error "cannot <action> ..." on
+   !> failure (the file is then not open), otherwise the names of `file` for messages.
+   subroutine name_file(path, status, action, file, error)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: status
+      character(len=*), intent(in) :: action   !! 'create' or 'open'
+      type(hdf5_location_t), intent(inout) :: file
+      type(error_t), allocatable, intent(out) :: error
+      if (status /= 0) then
+         file%id = -1
+         call fatal_error(error, 'HDF5: cannot '//action//' results file "'//path//'"')
+         return
+      end if
+      file%file_path = path
+      file%name = '/'
+   end subroutine name_file
+
+   !> Flush the whole file to disk (H5Fflush, global scope).
+   subroutine flush_file(file, error)
+      type(hdf5_location_t), intent(in) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      call h5fflush_f(file%id, h5f_scope_global_f, status)
+      if (status /= 0) call fatal_error(error, 'HDF5: cannot flush results file "'//file%file_path//'"')
+   end subroutine flush_file
+
+   !> Close `file` (no-op if it is not open), also after work on it that may have failed:
+   !> `error` keeps the work's error if there is one, otherwise it receives the close's.
+   subroutine close_file(file, error)
+      type(hdf5_location_t), intent(inout) :: file
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: status
+      if (file%id < 0) return
+      call h5fclose_f(file%id, status)
+      file%id = -1
+      if (status /= 0 .and. .not. allocated(error)) &
+         call fatal_error(error, 'HDF5: cannot close results file "'//file%file_path//'"')
+   end subroutine close_file
+end module frix_hdf5_file
