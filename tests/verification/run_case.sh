@@ -1,5 +1,6 @@
 #!/bin/bash
 # run_case.sh FRIX DECK [--reference LISTING] [--check COLUMN FACTOR EXPECTED REL_TOL LABEL]...
+#             [--script PYTHON_SCRIPT "ARGUMENTS"]...
 #
 # Run frix on DECK in a scratch folder, then
 #   --reference LISTING : compare the run's listing with a stored one (tests/compare.sh, default
@@ -7,9 +8,12 @@
 #                         were made by frix itself: they guard against unintended change, they
 #                         do not prove correctness.
 #   --check ...         : check_value.py on the run's history CSV (last row).
+#   --script S "ARGS"   : /usr/bin/python3 S WORK/NAME ARGS (ARGS split at blanks; WORK/NAME is
+#                         the run's base path, e.g. WORK/NAME_listing.txt), for checks that
+#                         need more than one history column (inputs/verification/necking_bar).
 # Exit 0 when every check passes.
 set -u
-[ $# -ge 2 ] || { echo "usage: run_case.sh FRIX DECK [--reference LISTING] [--check COL FACTOR EXPECTED TOL LABEL]..." >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: run_case.sh FRIX DECK [--reference LISTING] [--check COL FACTOR EXPECTED TOL LABEL]... [--script SCRIPT ARGS]..." >&2; exit 2; }
 frix=$1; deck=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 compare=$here/../compare.sh
@@ -32,6 +36,10 @@ while [ $# -gt 0 ]; do
         --check)
             /usr/bin/python3 "$here/check_value.py" "$work/${name}_history.csv" "$2" "$3" "$4" "$5" "$6" || status=1
             shift 6 ;;
+        --script)
+            # shellcheck disable=SC2086  # ARGS is split at blanks on purpose
+            /usr/bin/python3 "$2" "$work/$name" $3 || status=1
+            shift 3 ;;
         *) echo "run_case.sh: unknown argument $1" >&2; exit 2 ;;
     esac
 done
