@@ -1,39 +1,14 @@
-!> Small dense linear algebra of the element kernels: 3 x 3 determinant and inverse, and the
-!> solution of the small systems of the EAS condensation (n <= 30 unknowns).
+!> Small dense linear algebra of the element kernels: the solution of the small systems of the
+!> EAS condensation (n <= 30 unknowns); 3 x 3 determinants and inverses are in core's
+!> frix_vector_algebra.
 module frix_dense_algebra
    use frix_kinds, only: dp
    implicit none
    private
 
-   public :: determinant, invert3, solve_in_place
+   public :: solve_in_place
 
 contains
-
-   !> det of a 3 x 3 matrix by cofactors of the first row.
-   pure function determinant(matrix) result(det)
-      real(dp), intent(in) :: matrix(3, 3)
-      real(dp) :: det
-      det = matrix(1, 1)*(matrix(2, 2)*matrix(3, 3) - matrix(2, 3)*matrix(3, 2)) &
-            - matrix(1, 2)*(matrix(2, 1)*matrix(3, 3) - matrix(2, 3)*matrix(3, 1)) &
-            + matrix(1, 3)*(matrix(2, 1)*matrix(3, 2) - matrix(2, 2)*matrix(3, 1))
-   end function determinant
-
-   !> Inverse by cofactors; `inverse` is left undefined when det = 0.
-   pure subroutine invert3(matrix, inverse, det)
-      real(dp), intent(in) :: matrix(3, 3)
-      real(dp), intent(out) :: inverse(3, 3), det
-      inverse(1, 1) = matrix(2, 2)*matrix(3, 3) - matrix(2, 3)*matrix(3, 2)
-      inverse(1, 2) = matrix(1, 3)*matrix(3, 2) - matrix(1, 2)*matrix(3, 3)
-      inverse(1, 3) = matrix(1, 2)*matrix(2, 3) - matrix(1, 3)*matrix(2, 2)
-      inverse(2, 1) = matrix(2, 3)*matrix(3, 1) - matrix(2, 1)*matrix(3, 3)
-      inverse(2, 2) = matrix(1, 1)*matrix(3, 3) - matrix(1, 3)*matrix(3, 1)
-      inverse(2, 3) = matrix(1, 3)*matrix(2, 1) - matrix(1, 1)*matrix(2, 3)
-      inverse(3, 1) = matrix(2, 1)*matrix(3, 2) - matrix(2, 2)*matrix(3, 1)
-      inverse(3, 2) = matrix(1, 2)*matrix(3, 1) - matrix(1, 1)*matrix(3, 2)
-      inverse(3, 3) = matrix(1, 1)*matrix(2, 2) - matrix(1, 2)*matrix(2, 1)
-      det = matrix(1, 1)*inverse(1, 1) + matrix(1, 2)*inverse(2, 1) + matrix(1, 3)*inverse(3, 1)
-      if (det /= 0.0_dp) inverse = inverse/det
-   end subroutine invert3
 
    !> Solve A X = B in place (B <- X) by Gaussian elimination with partial pivoting; A is
    !> destroyed. `singular` when a pivot is below 1e-14 max|A| (n <= 30, so no LAPACK needed).

@@ -25,7 +25,8 @@ module frix_hex8
    use frix_material, only: material_t
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
    use frix_eas_modes, only: max_eas_modes, is_valid_eas_count, eas_modes, strain_push_matrix
-   use frix_dense_algebra, only: determinant, invert3, solve_in_place
+   use frix_vector_algebra, only: determinant, invert3
+   use frix_dense_algebra, only: solve_in_place
    implicit none
    private
 

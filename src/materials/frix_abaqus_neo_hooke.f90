@@ -35,7 +35,8 @@
 !> where the law is Hooke's with mu0 and K0).
 module frix_abaqus_neo_hooke
    use frix_kinds, only: dp
-   use frix_symmetric_tensor, only: symmetric_inverse
+   use frix_vector_algebra, only: invert3
+   use frix_symmetric_tensor, only: voigt_i, voigt_j, right_cauchy_green
    use frix_error, only: error_t, fatal_error, append_error
    use frix_strings, only: to_string
    use frix_material, only: material_t
@@ -46,8 +47,6 @@ module frix_abaqus_neo_hooke
    public :: abaqus_neo_hooke_t, new_abaqus_neo_hooke, abaqus_neo_hooke_from_properties
 
    !> Row i and column j of the symmetric 3 x 3 tensor behind Voigt index 1..6.
-   integer, parameter :: voigt_row(6) = [1, 2, 3, 1, 1, 2]
-   integer, parameter :: voigt_column(6) = [1, 2, 3, 2, 3, 3]
 
    !> Abaqus/CalculiX neo-Hookean material; no history.
    type, extends(material_t) :: abaqus_neo_hooke_t
@@ -129,42 +128,33 @@ contains
       real(dp), intent(out) :: stress(6)       !! S, Voigt, tensor shears
       real(dp), intent(out) :: tangent(6, 6)   !! dS/dE, Voigt
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: right_cauchy_green(3, 3), inverse(3, 3), det_c, jacobian, first_invariant
+      real(dp) :: c(3, 3), inverse(3, 3), det_c, jacobian, first_invariant
       real(dp) :: iso, vol, delta_ij, delta_kl
       integer :: a, b, i, j, k, l
 
       stress = 0.0_dp
       tangent = 0.0_dp
-      do a = 1, 3
-         right_cauchy_green(a, a) = 1.0_dp + 2.0_dp*strain(a)
-      end do
-      do a = 4, 6
-         i = voigt_row(a)
-         j = voigt_column(a)
-         right_cauchy_green(i, j) = strain(a)  ! C_ij = 2 E_ij = gamma_ij
-         right_cauchy_green(j, i) = strain(a)
-      end do
-
-      call symmetric_inverse(right_cauchy_green, inverse, det_c)
+      c = right_cauchy_green(strain)
+      call invert3(c, inverse, det_c)
       if (.not. (det_c > 0.0_dp)) then
          call fatal_error(error, self%name//': det C = '//to_string(det_c)// &
                           ' <= 0 (inverted or degenerate deformation)')
          return
       end if
       jacobian = sqrt(det_c)
-      first_invariant = right_cauchy_green(1, 1) + right_cauchy_green(2, 2) + right_cauchy_green(3, 3)
+      first_invariant = c(1, 1) + c(2, 2) + c(3, 3)
       iso = self%shear_modulus*jacobian**(-2.0_dp/3.0_dp)   ! mu0 J^(-2/3)
       vol = self%bulk_modulus*jacobian                       ! K0 J
 
       do a = 1, 6
-         i = voigt_row(a)
-         j = voigt_column(a)
+         i = voigt_i(a)
+         j = voigt_j(a)
          delta_ij = merge(1.0_dp, 0.0_dp, i == j)
          stress(a) = iso*(delta_ij - first_invariant/3.0_dp*inverse(i, j)) &
                      + vol*(jacobian - 1.0_dp)*inverse(i, j)
          do b = 1, 6
-            k = voigt_row(b)
-            l = voigt_column(b)
+            k = voigt_i(b)
+            l = voigt_j(b)
             delta_kl = merge(1.0_dp, 0.0_dp, k == l)
             associate (outer => inverse(i, j)*inverse(k, l), &
                        cross => inverse(i, k)*inverse(j, l) + inverse(i, l)*inverse(j, k))

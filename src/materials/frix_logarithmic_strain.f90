@@ -18,7 +18,7 @@
 !> so that T . dE_log = (P^T T) . dE.
 module frix_logarithmic_strain
    use frix_kinds, only: dp
-   use frix_symmetric_tensor, only: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor
+   use frix_symmetric_tensor, only: voigt_i, voigt_j, tensor_of_stress, strain_of_tensor, right_cauchy_green
    implicit none
    private
 
@@ -45,11 +45,7 @@ contains
       logical, intent(out) :: valid
       real(dp) :: c(3, 3), first(3, 3), logarithm(3, 3)
       integer :: a, i
-      c = tensor_of_strain(green)
-      c = 2.0_dp*c
-      do i = 1, 3
-         c(i, i) = c(i, i) + 1.0_dp
-      end do
+      c = right_cauchy_green(green)
       call symmetric_eigen3(c, log_strain%eigenvalues, log_strain%eigenvectors)
       valid = all(log_strain%eigenvalues > 0.0_dp)
       if (.not. valid) return

@@ -17,7 +17,8 @@
 !> the small-strain limit, where the law is Hooke's).
 module frix_neo_hookean
    use frix_kinds, only: dp
-   use frix_symmetric_tensor, only: symmetric_inverse
+   use frix_vector_algebra, only: invert3
+   use frix_symmetric_tensor, only: voigt_i, voigt_j, right_cauchy_green
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_material, only: material_t
@@ -29,8 +30,6 @@ module frix_neo_hookean
    public :: neo_hookean_t, new_neo_hookean, neo_hookean_from_properties
 
    !> Row i and column j of the symmetric 3 x 3 tensor behind Voigt index 1..6.
-   integer, parameter :: voigt_row(6) = [1, 2, 3, 1, 1, 2]
-   integer, parameter :: voigt_column(6) = [1, 2, 3, 2, 3, 3]
 
    !> Compressible neo-Hookean material; no history.
    type, extends(material_t) :: neo_hookean_t
@@ -86,22 +85,13 @@ contains
       real(dp), intent(out) :: stress(6)       !! S, Voigt, tensor shears
       real(dp), intent(out) :: tangent(6, 6)   !! dS/dE, Voigt
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: right_cauchy_green(3, 3), inverse(3, 3), det_c, log_j
+      real(dp) :: c(3, 3), inverse(3, 3), det_c, log_j
       integer :: a, b, i, j, k, l
 
       stress = 0.0_dp
       tangent = 0.0_dp
-      do a = 1, 3
-         right_cauchy_green(a, a) = 1.0_dp + 2.0_dp*strain(a)
-      end do
-      do a = 4, 6
-         i = voigt_row(a)
-         j = voigt_column(a)
-         right_cauchy_green(i, j) = strain(a)  ! C_ij = 2 E_ij = gamma_ij
-         right_cauchy_green(j, i) = strain(a)
-      end do
-
-      call symmetric_inverse(right_cauchy_green, inverse, det_c)
+      c = right_cauchy_green(strain)
+      call invert3(c, inverse, det_c)
       if (.not. (det_c > 0.0_dp)) then
          call fatal_error(error, self%name//': det C = '//to_string(det_c)// &
                           ' <= 0 (inverted or degenerate deformation)')
@@ -110,13 +100,13 @@ contains
       log_j = 0.5_dp*log(det_c)
 
       do a = 1, 6
-         i = voigt_row(a)
-         j = voigt_column(a)
+         i = voigt_i(a)
+         j = voigt_j(a)
          stress(a) = self%mu*(merge(1.0_dp, 0.0_dp, i == j) - inverse(i, j)) &
                      + self%lambda*log_j*inverse(i, j)
          do b = 1, 6
-            k = voigt_row(b)
-            l = voigt_column(b)
+            k = voigt_i(b)
+            l = voigt_j(b)
             tangent(a, b) = self%lambda*inverse(i, j)*inverse(k, l) &
                             + (self%mu - self%lambda*log_j) &
                             *(inverse(i, k)*inverse(j, l) + inverse(i, l)*inverse(j, k))

@@ -1,12 +1,12 @@
 !> Symmetric 3 x 3 tensors in the Voigt convention of frix_material (xx yy zz xy xz yz;
-!> strains with engineering shears, stresses with tensor shears), and the inverse of a
-!> symmetric 3 x 3 matrix, shared by the laws that work with C = I + 2 E.
+!> strains with engineering shears, stresses with tensor shears), and C = I + 2 E, shared by
+!> the laws that work with the right Cauchy-Green tensor.
 module frix_symmetric_tensor
    use frix_kinds, only: dp
    implicit none
    private
 
-   public :: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor, symmetric_inverse
+   public :: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor, right_cauchy_green
 
    !> Voigt index pairs (i, j) of the components xx yy zz xy xz yz.
    integer, parameter :: voigt_i(6) = [1, 2, 3, 1, 1, 2]
@@ -47,23 +47,15 @@ contains
       end do
    end function strain_of_tensor
 
-   !> Inverse of a symmetric 3 x 3 matrix by cofactors, and its determinant. When the
-   !> determinant is zero the inverse is left as the (unscaled) adjugate.
-   pure subroutine symmetric_inverse(matrix, inverse, determinant)
-      real(dp), intent(in) :: matrix(3, 3)
-      real(dp), intent(out) :: inverse(3, 3)
-      real(dp), intent(out) :: determinant
-      inverse(1, 1) = matrix(2, 2)*matrix(3, 3) - matrix(2, 3)*matrix(3, 2)
-      inverse(1, 2) = matrix(1, 3)*matrix(3, 2) - matrix(1, 2)*matrix(3, 3)
-      inverse(1, 3) = matrix(1, 2)*matrix(2, 3) - matrix(1, 3)*matrix(2, 2)
-      inverse(2, 2) = matrix(1, 1)*matrix(3, 3) - matrix(1, 3)*matrix(3, 1)
-      inverse(2, 3) = matrix(1, 3)*matrix(2, 1) - matrix(1, 1)*matrix(2, 3)
-      inverse(3, 3) = matrix(1, 1)*matrix(2, 2) - matrix(1, 2)*matrix(2, 1)
-      inverse(2, 1) = inverse(1, 2)
-      inverse(3, 1) = inverse(1, 3)
-      inverse(3, 2) = inverse(2, 3)
-      determinant = matrix(1, 1)*inverse(1, 1) + matrix(1, 2)*inverse(2, 1) &
-                    + matrix(1, 3)*inverse(3, 1)
-      if (determinant /= 0.0_dp) inverse = inverse/determinant
-   end subroutine symmetric_inverse
+
+   !> C = I + 2 E of a Green-Lagrange strain in Voigt form (engineering shears: C_ij = gamma_ij).
+   pure function right_cauchy_green(green) result(c)
+      real(dp), intent(in) :: green(6)
+      real(dp) :: c(3, 3)
+      integer :: i
+      c = 2.0_dp*tensor_of_strain(green)
+      do i = 1, 3
+         c(i, i) = c(i, i) + 1.0_dp
+      end do
+   end function right_cauchy_green
 end module frix_symmetric_tensor

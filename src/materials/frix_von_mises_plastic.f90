@@ -187,8 +187,8 @@ contains
       excess = norm - root_two_thirds*self%hardening%yield_stress(alpha)
       state_new(1:n_history) = state_old(1:n_history)
       state_new(state_yielded) = 0.0_dp
-      tangent = hooke_tangent(self%young, self%poisson)
       if (excess <= return_tolerance*root_two_thirds*self%hardening%yield_stress(alpha)) then
+         tangent = hooke_tangent(self%young, self%poisson)
          stress = trial
          stress(1:3) = stress(1:3) + kappa*volumetric
          return
@@ -196,6 +196,7 @@ contains
       call solve_consistency(self, mu, norm, alpha, dgamma, error)
       if (allocated(error)) then
          stress = 0.0_dp
+         tangent = 0.0_dp
          return
       end if
       normal = relative/norm
