@@ -112,6 +112,10 @@ set_tests_properties(restart_beam PROPERTIES LABELS regression)
 add_test(NAME restart_plastic COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_plastic.dck 1.3 2.2)
 set_tests_properties(restart_plastic PROPERTIES LABELS "regression;plasticity")
+# With a tied interface (S5, TIE): the ties are set up again from the mesh, not read back.
+add_test(NAME restart_tied COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${PROJECT_SOURCE_DIR}/inputs/s5_buried_pipe/s5_tied.dck 1.1 1.3)
+set_tests_properties(restart_tied PROPERTIES LABELS "regression;contact")
 
 # Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
 foreach(script plot_history plot_line render_mesh mohr_coulomb)

@@ -36,9 +36,12 @@ GEOM_BLOCK = ("Closed-form check: soil block 10 x 20 (half width x height, 20 D0
 def deck(name, title, mesh, element_eas, pair, load_surface, geometry, load, numstep=4,
          pressure=100.0):
     eas_text = "HEX8 + EAS %d" % element_eas if element_eas else "plain HEX8 (locks: s5.md)"
-    contact_text = pair.split("EPSN", 1)[1].strip()
+    if pair.startswith("TIE"):
+        contact_text = "TIE (bonded by elimination, dual mortar weights; no penalty)"
+    else:
+        contact_text = "EPSN " + pair.split("EPSN", 1)[1].strip()
     text = HEADER.format(title=title, geometry=geometry, element=eas_text,
-                         contact="EPSN" + " " + contact_text, load=load)
+                         contact=contact_text, load=load)
     dirichlet = [
         "SET soil_bottom DOF 1 1 1 VAL 0.0 0.0 0.0" if load_surface == "load_strip"
         else "SET soil_bottom DOF 0 0 1 VAL 0.0 0.0 0.0",
@@ -93,6 +96,9 @@ def pair(slave, master, mu, eps="1.0e4", normals="Facet", passes=1):
         p += " EPST %s MU %g" % (eps, mu)
     p += " GAPTOL 1.0e-6 PASSES %d NORMALS %s" % (passes, normals)
     return p
+
+
+TIE = "TIE 1 SLAVE pipe_outer MASTER cavity"
 
 
 def main():
@@ -168,6 +174,16 @@ def main():
                  mesh, 9, pair("pipe_outer", "cavity", mu, "1.0e7", normals), "soil_top",
                  GEOM_BLOCK.replace("s5_block.msh", mesh),
                  "Load: " + BLOCK.replace("p = 100 kPa", "p = 1 kPa"), numstep=1, pressure=1.0)
+    # tied interface (no slip, exact bond): the S5 meshes and the closed-form blocks
+    for mesh, tag in (("s5_coarse.msh", ""), ("s5_fine.msh", "_fine")):
+        deck("s5_tied" + tag, "Tied interface (no slip, bonded).", mesh, 9, TIE, "load_strip",
+             GEOM_S5.format(mesh=mesh), "Load: " + STRIP)
+    for mesh, mtag in (("s5_block.msh", ""), ("s5_block_fine.msh", "_fine")):
+        deck("s5_block%s_tied_p1" % mtag, "Closed-form check at p = 1 kPa, tied interface (no slip).",
+             mesh, 9, TIE, "soil_top", GEOM_BLOCK.replace("s5_block.msh", mesh),
+             "Load: " + BLOCK.replace("p = 100 kPa", "p = 1 kPa"), numstep=1, pressure=1.0)
+    deck("s5_block_tied", "Closed-form check, tied interface (no slip).", "s5_block.msh", 9, TIE,
+         "soil_top", GEOM_BLOCK, "Load: " + BLOCK, numstep=2)
     deck("s5_block_mu0_facet", "Reproducer: full slip with facet normals, EPSN 1e7: Newton stalls "
          "in the first increment (s5.md).", "s5_block.msh", 9,
          pair("pipe_outer", "cavity", 0.0, "1.0e7", "Facet"), "soil_top", GEOM_BLOCK,

@@ -28,10 +28,12 @@ module frix_contact_assembly
    use frix_face_projection, only: face_normal, face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
                                   contact_open, contact_slip
-   use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of
+   use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of, surface_faces
    use frix_contact_pass, only: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, &
                                 start_pass_state, kernel_nodes
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
+   use frix_tie_pass, only: setup_tie
+   use frix_tie_constraints, only: check_tie_nodes, tie_pattern_pairs
    use frix_strings, only: to_string
    use frix_friction_law, only: branch_free, branch_stick
    implicit none
@@ -47,6 +49,7 @@ module frix_contact_assembly
       integer, allocatable :: extra_pairs(:, :)   !! (2, n) node pairs added to the sparse pattern
       integer :: n_extra = 0
       logical :: frictional = .false.             !! some pair has friction
+      logical :: tied = .false.                   !! some pair is a TIE (frix_tie_constraints)
       !> friction or smoothed normals: the contact tangent is unsymmetric
       logical :: unsymmetric = .false.
       !> factor on the pressure every friction law sees, i.e. on mu for Coulomb; 1 except in
@@ -86,11 +89,32 @@ contains
                call setup_pass(model, p, pair%master_surface, pair%slave_surface, system%passes(k), error)
                if (allocated(error)) return
             end if
+            if (pair%tied) then
+               system%tied = .true.
+               cycle
+            end if
             if (.not. pair%parameters%friction%frictionless()) system%frictional = .true.
             if (system%frictional .or. pair%parameters%smoothed_normals) system%unsymmetric = .true.
          end associate
       end do
+      if (system%tied) call setup_tie_pattern(model, system, error)
    end subroutine setup_contact
+
+   !> Ties: the checks of frix_tie_constraints and the node pairs their elimination needs, kept
+   !> among the extra pairs of every sparse pattern.
+   subroutine setup_tie_pattern(model, system, error)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: pairs(:, :)
+      integer :: k
+      call check_tie_nodes(model%mesh, system%passes, model%contact_pairs(system%passes%pair)%id, error)
+      if (allocated(error)) return
+      call tie_pattern_pairs(model%mesh, system%passes, pairs)
+      do k = 1, size(pairs, 2)
+         call add_extra_pair(system, pairs(1, k), pairs(2, k))
+      end do
+   end subroutine setup_tie_pattern
 
    !> Pass `pair` of the model (slave_surface against master_surface, 0 for the pair's rigid
    !> plane): slave nodes, master faces, search band, patches, initial anchors.
@@ -104,6 +128,13 @@ contains
       pass%rigid = master_surface == 0
       call set_slave_nodes(model%mesh, model%mesh%surfaces(slave_surface), pass)
       associate (contact_pair => model%contact_pairs(pair))
+         if (contact_pair%tied) then
+            call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
+            call start_pass_state(pass)
+            call setup_tie(model%mesh%coords, surface_faces(model%mesh, model%mesh%surfaces(slave_surface)), &
+                           contact_pair%tie_tolerance, pass)
+            return
+         end if
          if (pass%rigid) then
             allocate (pass%faces(4, 0))
          else
@@ -143,7 +174,7 @@ contains
 
       missing = .false.
       do p = 1, size(system%passes)
-         if (system%passes(p)%rigid) cycle
+         if (system%passes(p)%rigid .or. system%passes(p)%tied) cycle
          call assign_faces(model%mesh%coords, u, model%contact_pairs(system%passes(p)%pair)%parameters%edge_tolerance, &
                            system%passes(p))
          associate (pass => system%passes(p))
@@ -204,6 +235,7 @@ contains
       touching_stiffness = .false.
       if (present(predictor)) touching_stiffness = predictor
       do p = 1, size(system%passes)
+         if (system%passes(p)%tied) cycle   ! frix_tie_constraints
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
             touch_normal = pair%parameters%normal%stiffness()
             touch_tangential = 0.0_dp
@@ -335,6 +367,7 @@ contains
       type(contact_system_t), intent(inout) :: system
       integer :: p, i
       do p = 1, size(system%passes)
+         if (system%passes(p)%tied) cycle   ! a tie's foot points never change
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) then

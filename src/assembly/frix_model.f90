@@ -108,7 +108,8 @@ module frix_model
    end type results_request_t
 
    !> A contact pair: the nodes of the slave surface against the faces of the master surface
-   !> (node-to-segment) or against a rigid plane. See docs/contact.md.
+   !> (node-to-segment) or against a rigid plane, or a tie of the slave nodes to the master
+   !> surface. See docs/contact.md.
    type :: contact_pair_t
       integer :: id = 0
       integer :: slave_surface = 0          !! index into model%mesh%surfaces
@@ -117,6 +118,12 @@ module frix_model
       real(dp) :: plane_normal(3) = 0.0_dp  !! rigid plane: unit normal out of the rigid body
       type(contact_parameters_t) :: parameters  !! normal contact law (METHOD, EPSN), EPST, gap tolerance, friction law
       integer :: passes = 1                 !! 2: also the master's nodes against the slave's faces
+      !> TIE: the slave nodes are bonded to the master surface by elimination
+      !> (frix_tie_constraints); `parameters` is then not set
+      logical :: tied = .false.
+      !> TIE: slave nodes farther than this from the master surface (reference configuration,
+      !> length) are not tied; < 0: the default, a tenth of the mean master face size
+      real(dp) :: tie_tolerance = -1.0_dp
       integer :: line = 0                   !! deck line
    end type contact_pair_t
 

@@ -9,6 +9,7 @@ module frix_contact_pass
    use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes
    use frix_contact_patches, only: surface_patches_t, surface_faces
    use frix_friction_law, only: branch_free
+   use frix_tie_mortar, only: tie_coupling_t
    implicit none
    private
 
@@ -22,6 +23,11 @@ module frix_contact_pass
    type :: contact_pass_t
       integer :: pair = 0                      !! index of the pass's contact pair (the model's)
       logical :: rigid = .false.               !! master is the pair's rigid plane
+      !> a TIE: each slave node with a master face (its closest point, for the output's
+      !> normal) is bonded to the master nodes of `tie` by elimination (frix_tie_pass,
+      !> frix_tie_constraints); no kernel, no search
+      logical :: tied = .false.
+      type(tie_coupling_t) :: tie
       integer, allocatable :: slave_nodes(:)   !! internal node numbers
       real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
       integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order

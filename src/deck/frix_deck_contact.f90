@@ -60,6 +60,10 @@ contains
       i = 0
       do while (reader%next_line(s_contact, i, position, ok))
          associate (line => reader%lines(i))
+            if (line%keyword(position) == 'TIE') then
+               call read_tie(reader, model, i, position, ok)
+               cycle
+            end if
             call read_pair_surfaces(reader, model, line, position, pair, ok)
             call read_pair_options(reader, line, position, pair%master_surface == 0, options, ok)
             if (.not. ok) cycle
@@ -71,17 +75,74 @@ contains
       end do
    end subroutine read_contact_pairs
 
-   !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE`: the id (new) and the surfaces.
-   subroutine read_pair_surfaces(reader, model, line, position, pair, ok)
+   !> `TIE <id> SLAVE <surface> MASTER <surface> [TOLERANCE <d>]`: the slave nodes bonded to
+   !> the master surface (frix_tie_pass; d the position tolerance, a length).
+   subroutine read_tie(reader, model, i, position, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: i              !! the line's index in reader%lines
+      integer, intent(inout) :: position
+      logical, intent(inout) :: ok
+      type(contact_pair_t) :: pair
+      associate (line => reader%lines(i))
+      call read_pair_surfaces(reader, model, line, position, pair, ok, 'TIE')
+      if (ok .and. pair%master_surface == 0) then
+         call reader%report(line, position - 1, 'a TIE needs a master surface, not a rigid plane')
+         ok = .false.
+      end if
+      if (ok) call check_tied_once(reader, model, line, pair, ok)
+      do while (ok .and. position <= line%n_tokens())
+         if (line%keyword(position) /= 'TOLERANCE') then
+            call reader%report(line, position, 'unknown keyword (expected TOLERANCE)')
+            ok = .false.
+            exit
+         end if
+         position = position + 1
+         call reader%take_real(line, position, 'TOLERANCE', pair%tie_tolerance, ok)
+         call require(reader, ok, pair%tie_tolerance >= 0.0_dp, line, position - 1, 'TOLERANCE must not be negative')
+      end do
+      end associate
+      if (.not. ok) return
+      pair%tied = .true.
+      pair%line = i
+      call append_pair(model%contact_pairs, pair)
+   end subroutine read_tie
+
+   !> A slave surface is tied once (a node tied to two surfaces is reported when the ties are
+   !> set up, frix_tie_constraints).
+   subroutine check_tied_once(reader, model, line, pair, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      type(contact_pair_t), intent(in) :: pair
+      logical, intent(inout) :: ok
+      integer :: k
+      do k = 1, size(model%contact_pairs)
+         if (.not. model%contact_pairs(k)%tied) cycle
+         if (model%contact_pairs(k)%slave_surface /= pair%slave_surface) cycle
+         call reader%report(line, 4, 'this slave surface is already tied (TIE '// &
+                            to_string(model%contact_pairs(k)%id)//')')
+         ok = .false.
+         return
+      end do
+   end subroutine check_tied_once
+
+   !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE` (or `TIE ...`): the id (new) and the surfaces.
+   subroutine read_pair_surfaces(reader, model, line, position, pair, ok, head)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(in) :: model
       type(deck_line_t), intent(in) :: line
       integer, intent(inout) :: position
       type(contact_pair_t), intent(inout) :: pair
       logical, intent(inout) :: ok
+      character(len=*), intent(in), optional :: head   !! the line's first keyword (default PAIR)
       character(len=:), allocatable :: name
       integer :: k
-      call reader%expect_keyword(line, position, 'PAIR', ok)
+      if (present(head)) then
+         call reader%expect_keyword(line, position, head, ok)
+      else
+         call reader%expect_keyword(line, position, 'PAIR', ok)
+      end if
       call reader%take_integer(line, position, 'a pair id', pair%id, ok)
       if (.not. ok) return
       do k = 1, size(model%contact_pairs)

@@ -28,6 +28,8 @@ module frix_newton_solver
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
+   use frix_tie_constraints, only: dependent_equations, condense_vector, condense_matrix, expand_vector, &
+                                   record_tie_forces
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
    use frix_newton_report, only: newton_report_t, reserve_iteration_log, print_progress
    use frix_equation_checks, only: check_finite, check_finite_tangent, describe_singularity, equation_label
@@ -56,6 +58,8 @@ module frix_newton_solver
       class(linear_solver_t), allocatable :: solver    !! from the deck's SOLVER (frix_linear_solver_registry)
       logical :: symmetric = .true.        !! tangent symmetric: materials, loads and contact all say so
       logical, allocatable :: fixed(:)     !! constrained equations
+      !> equations eliminated by ties (frix_tie_constraints): solved as fixed, then recovered
+      logical, allocatable :: dependent(:)
       real(dp), allocatable :: prescribed(:)
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
       real(dp), allocatable :: reactions(:) !! fint - fext on constrained equations, 0 elsewhere
@@ -91,7 +95,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: n
       n = 3*model%mesh%n_nodes
-      call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
+      if (state%has_contact) then   ! with the pairs ties need (frix_tie_constraints)
+         call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, &
+                                                       state%contact%extra_pairs(:, :state%contact%n_extra), error)
+      else
+         call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
+      end if
       if (allocated(error)) return
       context%symmetric = .not. has_follower_loads(model) .and. internal_tangent_symmetric(model)
       ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
@@ -101,6 +110,7 @@ contains
       call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
       if (allocated(error)) return
       allocate (context%fixed(n), context%prescribed(n))
+      allocate (context%dependent(n), source=.false.)
       allocate (context%fint(n), context%fext(n), context%residual(n), context%correction(n), &
                 context%reactions(n), context%diagonal(n), context%load_rate(n), context%load_response(n), &
                 source=0.0_dp)
@@ -189,7 +199,18 @@ contains
          call prescribed_displacements(model, time, context%fixed, context%prescribed)
       end if
       where (context%fixed) state%u = context%prescribed
+      if (tied(state)) then
+         call dependent_equations(state%contact%passes, context%fixed, context%dependent)
+         call expand_vector(state%contact%passes, context%dependent, state%u)
+      end if
    end subroutine start_increment
+
+   !> Whether the model has ties (equations eliminated by frix_tie_constraints).
+   pure logical function tied(state)
+      type(analysis_state_t), intent(in) :: state
+      tied = .false.
+      if (state%has_contact) tied = state%contact%tied
+   end function tied
 
    !> The iteration's norms into the report's log, and its progress line.
    subroutine record_iteration(context, state, label, time, iteration, residual_norm, reference, energy, report)
@@ -277,7 +298,7 @@ contains
       ! the value put on the diagonal of constrained equations: the mean |K_ii|
       diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
       if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
-      call context%matrix%apply_dirichlet(context%fixed, diagonal_scale)
+      call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
       call factorize_and_solve(model, context, inner_error)
       if (allocated(inner_error)) then
          if (iteration == 0) then
@@ -288,6 +309,7 @@ contains
          return
       end if
       where (context%fixed) context%correction = 0.0_dp
+      if (tied(state)) call expand_vector(state%contact%passes, context%dependent, context%correction)
       time_correction = 0.0_dp
       if (driving(path)) then
          call path_correction(model, context, state, path, time_correction, report%failure, error)
@@ -333,9 +355,11 @@ contains
       call assemble_external(model, path%step_start, state%u, context%load_response)
       context%load_rate = (context%load_rate - context%load_response)/(path%step_end - path%step_start)
       where (context%fixed) context%load_rate = 0.0_dp
+      if (tied(state)) call condense_vector(state%contact%passes, context%dependent, context%load_rate)
       call solve_factorized(context, context%load_rate, context%load_response, error)
       if (allocated(error)) return
       where (context%fixed) context%load_response = 0.0_dp
+      if (tied(state)) call expand_vector(state%contact%passes, context%dependent, context%load_response)
       response = context%load_response(path%equation)
       if (.not. abs(response) > 0.0_dp) then
          failure = 'the loads do not move the driving displacement ('// &
@@ -419,6 +443,10 @@ contains
       context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
       context%n_assemblies = context%n_assemblies + 1
       context%residual = context%fext - context%fint
+      if (tied(state)) then
+         call eliminate_ties(model, context, state, with_tangent, error)
+         if (allocated(error)) return
+      end if
       where (context%fixed)
          context%reactions = -context%residual
          context%residual = 0.0_dp
@@ -431,6 +459,19 @@ contains
       if (.not. (ieee_is_finite(residual_norm) .and. ieee_is_finite(reference))) &
          failure = 'the norm of the residual or of the reactions is not finite (beyond the range of real numbers)'
    end subroutine evaluate_equilibrium
+
+   !> Ties: their bond forces recorded from the residual, then the dependent equations
+   !> eliminated from the residual and (with_tangent) the tangent (frix_tie_constraints).
+   subroutine eliminate_ties(model, context, state, with_tangent, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      logical, intent(in) :: with_tangent
+      type(error_t), allocatable, intent(out) :: error
+      call record_tie_forces(model%mesh%coords, state%u, context%dependent, context%residual, state%contact%passes)
+      call condense_vector(state%contact%passes, context%dependent, context%residual)
+      if (with_tangent) call condense_matrix(state%contact%passes, context%dependent, context%matrix, error)
+   end subroutine eliminate_ties
 
    !> Line search after a Newton correction du with contact, when the residual at u + du is
    !> larger than before the correction (penalty contact overshoots as nodes enter or leave
