@@ -88,6 +88,7 @@ contains
                k = k + 1
                call setup_pass(model, p, pair%master_surface, pair%slave_surface, system%passes(k), error)
                if (allocated(error)) return
+               call pair_passes(model%mesh%n_nodes, k - 1, k, system%passes)
             end if
             if (pair%tied) then
                system%tied = .true.
@@ -115,6 +116,23 @@ contains
          call add_extra_pair(system, pairs(1, k), pairs(2, k))
       end do
    end subroutine setup_tie_pattern
+
+   !> The two passes first and second of a PASSES 2 pair know each other and where the mesh's
+   !> nodes are among their slave nodes (for the interface force, interface_traction).
+   subroutine pair_passes(n_nodes, first, second, passes)
+      integer, intent(in) :: n_nodes, first, second
+      type(contact_pass_t), intent(inout) :: passes(:)
+      integer :: p, i
+      passes(first)%partner = second
+      passes(second)%partner = first
+      do p = first, second
+         allocate (passes(p)%slave_index(n_nodes), source=0)
+         do i = 1, size(passes(p)%slave_nodes)
+            passes(p)%slave_index(passes(p)%slave_nodes(i)) = i
+         end do
+         allocate (passes(p)%interface_force(3, size(passes(p)%slave_nodes)), source=0.0_dp)
+      end do
+   end subroutine pair_passes
 
    !> Pass `pair` of the model (slave_surface against master_surface, 0 for the pair's rigid
    !> plane): slave nodes, master faces, search band, patches, initial anchors.
@@ -235,6 +253,9 @@ contains
       touching_stiffness = .false.
       if (present(predictor)) touching_stiffness = predictor
       do p = 1, size(system%passes)
+         if (allocated(system%passes(p)%interface_force)) system%passes(p)%interface_force = 0.0_dp
+      end do
+      do p = 1, size(system%passes)
          if (system%passes(p)%tied) cycle   ! frix_tie_constraints
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
             touch_normal = pair%parameters%normal%stiffness()
@@ -300,6 +321,7 @@ contains
                   node = nodes(a)
                   fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + force(3*a - 2:3*a)
                end do
+               if (pass%partner > 0) call add_interface_force(system%passes, p, i, nodes(:5), force(:15))
                if (present(matrix)) call matrix%add_element(nodes(:n_nodes), tangent(:n, :n))
                if (allocated(x_anchor_face)) deallocate (x_anchor_face)
                if (allocated(x_ring)) deallocate (x_ring, patch)
@@ -307,6 +329,44 @@ contains
          end associate
       end do
    end subroutine assemble_contact
+
+   !> PASSES 2: the kernel forces of slave i of pass p (fint entries of its slave and its
+   !> master face's 4 nodes; the force on a node is -fint) added to the interface force of
+   !> the slave node in pass p and of the master nodes in the partner pass.
+   subroutine add_interface_force(passes, p, i, nodes, fint_entries)
+      type(contact_pass_t), intent(inout) :: passes(:)
+      integer, intent(in) :: p, i, nodes(5)
+      real(dp), intent(in) :: fint_entries(15)
+      integer :: a, j, q
+      q = passes(p)%partner
+      passes(p)%interface_force(:, i) = passes(p)%interface_force(:, i) - fint_entries(1:3)
+      do a = 2, 5
+         j = passes(q)%slave_index(nodes(a))
+         if (j > 0) passes(q)%interface_force(:, j) = passes(q)%interface_force(:, j) - fint_entries(3*a - 2:3*a)
+      end do
+   end subroutine add_interface_force
+
+   !> The pressure and tangential traction written for slave i of a pass (force/area): the
+   !> kernel's with one pass; with PASSES 2 the interface's, from the force of both passes on
+   !> the node (interface_force): p = f . n / A_s, t = (f - (f . n) n) / A_s, n the normal of
+   !> the node's own kernel (out of the master body, towards the slave). Each pass of a
+   !> two-pass pair carries part of the interface force, in shares that the penalties leave
+   !> open where the meshes do not match (docs/contact.md); their sum is the interface's.
+   pure subroutine interface_traction(pass, i, pressure, traction)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: i
+      real(dp), intent(out) :: pressure, traction(3)
+      real(dp) :: normal(3), force(3)
+      if (pass%partner == 0) then
+         pressure = pass%result(i)%pressure
+         traction = pass%result(i)%traction
+         return
+      end if
+      normal = pass%result(i)%normal
+      force = pass%interface_force(:, i)
+      pressure = dot_product(force, normal)/pass%area(i)
+      traction = (force - dot_product(force, normal)*normal)/pass%area(i)
+   end subroutine interface_traction
 
    !> Slip reversal (called at each Newton iterate, after slave i's evaluation): a node that
    !> slipped at the previous iterate and now slips the opposite way (t . t_previous < 0) has
@@ -439,6 +499,7 @@ contains
       type(contact_system_t), intent(in) :: system
       integer, intent(in) :: n_nodes
       real(dp), allocatable, intent(out) :: pressure(:), traction(:, :), gap(:), status(:), slip(:)
+      real(dp) :: node_pressure, node_traction(3)
       integer :: p, i, node
       allocate (pressure(n_nodes), gap(n_nodes), slip(n_nodes), source=0.0_dp)
       allocate (traction(3, n_nodes), source=0.0_dp)
@@ -447,9 +508,10 @@ contains
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
                node = pass%slave_nodes(i)
-               if (status(node) >= 0.0_dp .and. pressure(node) >= pass%result(i)%pressure) cycle
-               pressure(node) = pass%result(i)%pressure
-               traction(:, node) = pass%result(i)%traction
+               call interface_traction(pass, i, node_pressure, node_traction)
+               if (status(node) >= 0.0_dp .and. pressure(node) >= node_pressure) cycle
+               pressure(node) = node_pressure
+               traction(:, node) = node_traction
                gap(node) = merge(pass%result(i)%gap, 0.0_dp, pass%face(i) > 0)
                status(node) = real(pass%result(i)%status, dp)
                slip(node) = pass%slip(i)
@@ -475,8 +537,7 @@ contains
          allocate (values(7, size(nodes)))
          do i = 1, size(nodes)
             values(1, i) = merge(pass%result(i)%gap, 0.0_dp, pass%face(i) > 0)
-            values(2, i) = pass%result(i)%pressure
-            values(3:5, i) = pass%result(i)%traction
+            call interface_traction(pass, i, values(2, i), values(3:5, i))
             values(6, i) = pass%slip(i)
             values(7, i) = real(pass%result(i)%status, dp)
          end do

@@ -30,6 +30,14 @@ module frix_contact_pass
       type(tie_coupling_t) :: tie
       integer, allocatable :: slave_nodes(:)   !! internal node numbers
       real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
+      !> PASSES 2: the other pass of the pair (0 with one pass), the position of each mesh node
+      !> among this pass's slave nodes (0: not one), and the force of the interface on each
+      !> slave node from both passes at the last assembly (its own kernel's and the other
+      !> pass's kernels' reactions on it; force units), from which the interface pressure is
+      !> written (frix_contact_assembly's interface_traction)
+      integer :: partner = 0
+      integer, allocatable :: slave_index(:)
+      real(dp), allocatable :: interface_force(:, :)
       integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
       !> smoothed normals (NORMALS Smoothed): the patch of every master face

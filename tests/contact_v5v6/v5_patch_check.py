@@ -12,9 +12,12 @@ Exact solution (same material in both blocks): sigma_zz = -P everywhere, contact
 Quantities (all divided by P):
   pass<k>_min, pass<k>_max  slave-node pressures p_i of pass k as printed by frix (per unit area)
   pass_sum                  sum over passes and slave nodes of p_i A_i / (P * 1): the transmitted
-                            load over the applied one (equilibrium: 1)
+                            load over the applied one (equilibrium: 1); with two passes the
+                            mean of the two passes' sums (each pass's pressure is the
+                            interface's, docs/contact.md)
   upper_err, lower_err      max |t_a - P| / P over the interface nodes a of each body, with the
-                            TRANSMITTED nodal traction t_a = f_a / A_a: f_a the total contact
+                            TRANSMITTED nodal traction t_a = f_a / A_a (two passes: the pressure
+                            frix writes, which is that traction): f_a the total contact
                             force on node a (its own slave force p_a A_a, plus N_a(xi_j) p_j A_j
                             of every slave node j of the other pass that lands on a face of a),
                             A_a its tributary area (bilinear face weights of the reference grid)
@@ -100,10 +103,22 @@ def main(argv=None):
     values = {}
     passes = sorted(set(int(k) for k in data["pass"]))
     total = 0.0
+    two_pass = len(passes) == 2
     for k in passes:
         rows = data[data["pass"] == k]
         values[f"pass{k}_min"] = rows["pressure"].min() / p_applied
         values[f"pass{k}_max"] = rows["pressure"].max() / p_applied
+        if two_pass:
+            # frix writes the interface pressure of each slave node (both passes' forces on
+            # it): it is the transmitted traction t_a itself, and each pass's integrates to
+            # the load
+            for row in rows:
+                slave = body_of[int(row["node"])]
+                n_s, _, area_s = bodies[slave]
+                i, j = where[slave][int(row["node"])]
+                force[slave][i, j] = row["pressure"] * area_s[i, j]
+                total += 0.5 * row["pressure"] * area_s[i, j]
+            continue
         for row in rows:
             node = int(row["node"])
             slave = body_of[node]
