@@ -134,10 +134,14 @@ def main():
          "cavity", "pipe_outer", 0.0, "1.0e4", "Facet", 1),
         # penalty study (mu = 0.5): the seed's EPSN = EPST = 1e4 is of the order of the soil's
         # stiffness around the pipe (2 G / R = 4e3 kPa/m)
+        ("s5_mu0.5_epsn1e3", "mu = 0.5, EPSN = EPST = 1e3.", "s5_coarse.msh", 9, "pipe_outer",
+         "cavity", 0.5, "1.0e3", "Facet", 1),
         ("s5_mu0.5_epsn1e5", "mu = 0.5, EPSN = EPST = 1e5.", "s5_coarse.msh", 9, "pipe_outer",
          "cavity", 0.5, "1.0e5", "Facet", 1),
         ("s5_mu0.5_epsn1e6", "mu = 0.5, EPSN = EPST = 1e6.", "s5_coarse.msh", 9, "pipe_outer",
          "cavity", 0.5, "1.0e6", "Facet", 1),
+        ("s5_mu0.5_epsn1e7", "mu = 0.5, EPSN = EPST = 1e7.", "s5_coarse.msh", 9, "pipe_outer",
+         "cavity", 0.5, "1.0e7", "Facet", 1),
         # elements of the pipe wall (mu = 0.5)
         ("s5_mu0.5_hex8", "mu = 0.5, plain HEX8 pipe wall (locking).", "s5_coarse.msh", 0,
          "pipe_outer", "cavity", 0.5, "1.0e4", "Facet", 1),

@@ -18,7 +18,7 @@ list(APPEND s5_names contact_s5_closed_form)
 # The benchmark decks, coarse mesh (360 HEX8, 2-15 s each) and fine mesh (1408 HEX8, 9-15 s).
 foreach(deck s5_mu0.5 s5_mu0 s5_bonded_penalty s5_mu0.5_smoothed s5_mu0.5_2pass s5_mu0_2pass
              s5_mu0.5_soilslave s5_mu0_soilslave s5_mu0.5_hex8 s5_mu0.5_eas21
-             s5_mu0.5_epsn1e5 s5_mu0.5_epsn1e6
+             s5_mu0.5_epsn1e3 s5_mu0.5_epsn1e5 s5_mu0.5_epsn1e6 s5_mu0.5_epsn1e7
              s5_mu0.5_fine s5_mu0_fine s5_bonded_penalty_fine s5_tied s5_tied_fine)
   add_test(NAME contact_${deck}
            COMMAND bash ${s5_dir}/run_s5.sh ${FRIX_BIN} ${s5_decks}/${deck}.dck --reference ${s5_reference})
