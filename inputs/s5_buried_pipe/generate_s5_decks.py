@@ -78,11 +78,11 @@ SURF {load_surface} PRESSURE {pressure}
 STEP 1 NUMSTEP {numstep} CONTROL Load
 -------------------------------------------------------------RESULTS
 VTK Yes  LISTING Yes  POS3D Yes  HDF5 Yes
-HISTORY NODE 6  DOF 3 KIND U     // crown, u_z
-HISTORY NODE 10 DOF 3 KIND U     // invert, u_z
-HISTORY NODE 8  DOF 1 KIND U     // springline, u_x
-HISTORY NODE 8  DOF 3 KIND U     // springline, u_z
-HISTORY NODE 1  DOF 3 KIND U     // soil cavity crown, u_z
+HISTORY SET crown DOF 3 KIND U        // node 6, u_z
+HISTORY SET invert DOF 3 KIND U       // node 10, u_z
+HISTORY SET springline DOF 1 KIND U   // node 8, u_x
+HISTORY SET springline DOF 3 KIND U   // node 8, u_z
+HISTORY SET soil_crown DOF 3 KIND U   // node 1, u_z
 -----------------------------------------------------------------END
 """.format(mesh=mesh, eas=element_eas, dirichlet="\n".join(dirichlet), load_surface=load_surface,
            pair=pair, numstep=numstep, pressure=pressure)

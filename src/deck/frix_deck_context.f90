@@ -443,16 +443,40 @@ contains
       end do
    end subroutine mark_nodes
 
-   !> `NODE <id> DOF <1-3>`: the internal node number and the component.
-   subroutine read_node_dof(reader, line, position, node, component, ok)
+   !> `NODE <id> DOF <1-3>` or `SET <name> DOF <1-3>` (a node set of one node, as a gmsh
+   !> physical point gives): the internal node number and the component.
+   subroutine read_node_dof(reader, model, line, position, node, component, ok)
       type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
       type(deck_line_t), intent(in) :: line
       integer, intent(inout) :: position
       integer, intent(out) :: node, component
       logical, intent(inout) :: ok
-      integer :: id
+      integer :: id, set
+      character(len=:), allocatable :: name
       node = 0
       component = 0
+      if (ok .and. position <= line%n_tokens()) then
+         if (line%keyword(position) == 'SET') then
+            position = position + 1
+            call reader%take_word(line, position, 'a node set name', name, ok)
+            if (ok) then
+               set = model%mesh%find_node_set(name)
+               if (set == 0) then
+                  ok = .false.
+                  if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'unknown node set')
+               else if (size(model%mesh%node_sets(set)%nodes) /= 1) then
+                  ok = .false.
+                  call reader%report(line, position - 1, 'this node set has '// &
+                                     to_string(size(model%mesh%node_sets(set)%nodes))//' nodes, not one')
+               else
+                  node = model%mesh%node_sets(set)%nodes(1)
+               end if
+            end if
+            call read_dof(reader, line, position, component, ok)
+            return
+         end if
+      end if
       call reader%expect_keyword(line, position, 'NODE', ok)
       call reader%take_integer(line, position, 'a node id', id, ok)
       if (ok) then
@@ -462,11 +486,22 @@ contains
             if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'undefined node '//to_string(id))
          end if
       end if
+      call read_dof(reader, line, position, component, ok)
+   end subroutine read_node_dof
+
+   !> `DOF <1-3>`.
+   subroutine read_dof(reader, line, position, component, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      integer, intent(out) :: component
+      logical, intent(inout) :: ok
+      component = 0
       call reader%expect_keyword(line, position, 'DOF', ok)
       call reader%take_integer(line, position, 'a DOF index', component, ok)
       call require(reader, ok, component >= 1 .and. component <= 3, line, position - 1, &
                    'DOF index out of range 1..3')
-   end subroutine read_node_dof
+   end subroutine read_dof
 
    !> Report `message` at token `position` unless `condition` holds (only if still `ok`).
    subroutine require(reader, ok, condition, line, position, message)

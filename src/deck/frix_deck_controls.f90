@@ -272,7 +272,7 @@ contains
       real(dp) :: start, finish
       control_position = position - 1
       node_position = position + 1
-      call read_node_dof(reader, line, position, step%path_node, step%path_component, ok)
+      call read_node_dof(reader, model, line, position, step%path_node, step%path_component, ok)
       call reader%expect_keyword(line, position, 'TARGET', ok)
       call reader%take_real(line, position, 'TARGET (the displacement where the step ends)', step%path_target, ok)
       if (.not. ok) return

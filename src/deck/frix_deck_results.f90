@@ -41,7 +41,7 @@ contains
             call require(reader, ok, value >= 1, line, position - 1, 'EVERY must be at least 1')
             if (ok) model%results%every = value
          case ('HISTORY')
-            call read_history(reader, line, position, request, ok)
+            call read_history(reader, model, line, position, request, ok)
             if (ok) model%results%history = [model%results%history, request]
          case default
             pair%known = .false.
@@ -49,15 +49,16 @@ contains
       end associate
    end subroutine read_results_pair
 
-   !> `HISTORY NODE <id> DOF <1-3> [KIND U|R]` (after HISTORY).
-   subroutine read_history(reader, line, position, request, ok)
+   !> `HISTORY NODE <id> | SET <one-node set> DOF <1-3> [KIND U|R]` (after HISTORY).
+   subroutine read_history(reader, model, line, position, request, ok)
       type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
       type(deck_line_t), intent(in) :: line
       integer, intent(inout) :: position
       type(history_request_t), intent(out) :: request
       logical, intent(inout) :: ok
       character(len=:), allocatable :: word
-      call read_node_dof(reader, line, position, request%node, request%component, ok)
+      call read_node_dof(reader, model, line, position, request%node, request%component, ok)
       if (.not. ok) return
       if (position <= line%n_tokens()) then
          if (line%keyword(position) == 'KIND') then
