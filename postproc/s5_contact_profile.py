@@ -4,12 +4,13 @@ frix HDF5 results file (S5, docs/verification/s5.md).
 
 For every slave node of contact pass 1 (frix's order: first appearance over the slave
 surface's faces) on the plane y = 0 (the front face of the slab) it
-takes frix's contact pressure p_N and tangential traction t (increment group `contact/`), rebuilds
-the normal n frix used (the facet normal of the master face in the restart table
-`pass1_history` at its face coordinates, in the current configuration; with --smoothed the
-smoothed normal of NORMALS Smoothed, from the nodal normals of the master faces; the face
-coordinates are the committed anchor's, i.e. the contact point for frictionless and slipping
-nodes, the stick point for sticking ones) and resolves the
+takes frix's contact pressure p_N, tangential traction t and the normal n frix used (increment
+group `contact/`, dataset `normal`: t is tangential to it). Files written before frix stored
+`contact/normal` do not have it: n is then rebuilt (the facet normal of the master face in the
+restart table `pass1_history` at its face coordinates, in the current configuration; with
+--smoothed the smoothed normal of NORMALS Smoothed, from the nodal normals of the master faces;
+the face coordinates are the committed anchor's, i.e. the contact point for frictionless and
+slipping nodes, the stick point for sticking ones). It then resolves the
 interface traction on the pipe, f = +-(p_N n + t), in the pipe's own frame: e_r the outward
 normal of the deformed pipe surface at the node (the normalised sum of the normals of the
 pipe faces at the node; on the symmetry plane x = 0 its x component is dropped, as the
@@ -64,6 +65,7 @@ def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, sm
         trac = g["contact/traction"][:]
         status = g["contact/status"][:]
         hist = g["contact/pass1_history"][:]
+        stored_normal = g["contact/normal"][:] if "normal" in g["contact"] else None
         slave_el = f["mesh/surfaces/%s/elements" % slave][:]
         slave_face = f["mesh/surfaces/%s/faces" % slave][:]
         surf_el = f["mesh/surfaces/%s/elements" % master][:]
@@ -84,7 +86,7 @@ def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, sm
     master_faces = [[conn[e - 1][a - 1] - 1 for a in FACES[int(fc)]]
                     for e, fc in zip(surf_el, surf_face)]
     nodal_normals = {}
-    if smoothed:                               # docs/contact.md "Smoothed normals"
+    if smoothed:                               # docs/contact.md "Normals"
         for nodes in master_faces:
             for a, node in enumerate(nodes):
                 nodal_normals[node] = nodal_normals.get(node, 0.0) + face_normal(x[nodes], *corners[a])
@@ -104,7 +106,9 @@ def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, sm
         face = int(hist[k, 0])
         el = conn[surf_el[face - 1] - 1]           # internal numbers, 1-based
         corner = [el[a - 1] - 1 for a in FACES[int(surf_face[face - 1])]]
-        if smoothed:
+        if stored_normal is not None and np.linalg.norm(stored_normal[i]) > 0.0:
+            n = stored_normal[i]                # the normal frix used
+        elif smoothed:
             n = smoothed_normal(x, master_faces, nodal_normals, face - 1, hist[k, 1], hist[k, 2])
         else:
             n = face_normal(x[corner], hist[k, 1], hist[k, 2])
@@ -137,7 +141,8 @@ def main():
                         help="the pipe is the master surface (the soil cavity is the slave)")
     parser.add_argument("--axis", default="0,-2", help="pipe axis x,z (0,-2)")
     parser.add_argument("--smoothed", action="store_true",
-                        help="the pair used NORMALS Smoothed: rebuild frix's smoothed normal")
+                        help="files without contact/normal only: the pair used NORMALS Smoothed, "
+                             "rebuild frix's smoothed normal")
     parser.add_argument("--increment", type=int, default=None, help="running increment number (last)")
     parser.add_argument("--csv", help="write the table to this CSV file")
     parser.add_argument("--plot", help="plot p_r and tau against the angle into this PNG")

@@ -94,7 +94,9 @@ def pair(slave, master, mu, eps="1.0e4", normals="Facet", passes=1):
     p = "PAIR 1 SLAVE %s MASTER %s EPSN %s" % (slave, master, eps)
     if mu > 0:
         p += " EPST %s MU %g" % (eps, mu)
-    p += " GAPTOL 1.0e-6 PASSES %d NORMALS %s" % (passes, normals)
+    p += " GAPTOL 1.0e-6 PASSES %d" % passes
+    if normals:   # None: the default (NORMALS Auto)
+        p += " NORMALS %s" % normals
     return p
 
 
@@ -124,6 +126,11 @@ def main():
          "cavity", 0.5, "1.0e4", "Smoothed", 1),
         ("s5_mu0_smoothed", "mu = 0, smoothed master normals.", "s5_coarse.msh", 9, "pipe_outer",
          "cavity", 0.0, "1.0e4", "Smoothed", 1),
+        # the default master normals (no NORMALS: Auto, smoothed within the feature angle)
+        ("s5_mu0.5_auto", "mu = 0.5, default master normals (NORMALS Auto).", "s5_coarse.msh", 9,
+         "pipe_outer", "cavity", 0.5, "1.0e4", None, 1),
+        ("s5_mu0_auto", "mu = 0, default master normals (NORMALS Auto).", "s5_coarse.msh", 9,
+         "pipe_outer", "cavity", 0.0, "1.0e4", None, 1),
         ("s5_mu0.5_2pass", "mu = 0.5, two passes.", "s5_coarse.msh", 9, "pipe_outer", "cavity", 0.5,
          "1.0e4", "Facet", 2),
         ("s5_mu0_2pass", "mu = 0, two passes.", "s5_coarse.msh", 9, "pipe_outer", "cavity", 0.0,

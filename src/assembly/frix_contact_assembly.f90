@@ -57,10 +57,12 @@ module frix_contact_assembly
       real(dp) :: friction_scale = 1.0_dp
    end type contact_system_t
 
-   !> Columns of `contact_pass_table` (listing, CSV).
-   character(len=*), parameter :: contact_table_labels(7) = [character(len=10) :: 'GAP', 'PRESSURE', &
-                                                              'TRACTION_X', 'TRACTION_Y', 'TRACTION_Z', &
-                                                              'SLIP', 'STATUS']
+   !> Columns of `contact_pass_table` (listing, CSV): the traction is tangential to the normal
+   !> NORMAL_X/Y/Z that was used (unit, out of the master body; facet, smoothed or the plane's).
+   character(len=*), parameter :: contact_table_labels(10) = [character(len=10) :: 'GAP', 'PRESSURE', &
+                                                               'TRACTION_X', 'TRACTION_Y', 'TRACTION_Z', &
+                                                               'SLIP', 'STATUS', 'NORMAL_X', 'NORMAL_Y', &
+                                                               'NORMAL_Z']
 
    integer, parameter :: contact_history_rows = 8  !! rows of get_contact_history
 
@@ -158,7 +160,8 @@ contains
          else
             call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
             if (contact_pair%parameters%smoothed_normals) then
-               call surface_patches(model%mesh%n_nodes, pass%faces, pass%patches)
+               call surface_patches(model%mesh%coords, pass%faces, contact_pair%parameters%feature_angle, &
+                                    pass%patches)
                pass%smooth = .true.
                call check_patch_rings(pass%patches, error)
                if (allocated(error)) then
@@ -493,16 +496,18 @@ contains
    end subroutine contact_counts
 
    !> Nodal fields for output: pressure p_N (force/area), tangential traction (3), gap,
-   !> status (0 open, 1 stick, 2 slip; -1 not a slave node), accumulated slip. Where a node is
-   !> a slave of several passes, the pass with the larger pressure wins.
-   subroutine contact_nodal_fields(system, n_nodes, pressure, traction, gap, status, slip)
+   !> status (0 open, 1 stick, 2 slip; -1 not a slave node), accumulated slip, and the contact
+   !> normal n (3, unit, out of the master body; zero without a master face) to which the
+   !> traction is tangential. Where a node is a slave of several passes, the pass with the
+   !> larger pressure wins.
+   subroutine contact_nodal_fields(system, n_nodes, pressure, traction, gap, status, slip, normal)
       type(contact_system_t), intent(in) :: system
       integer, intent(in) :: n_nodes
-      real(dp), allocatable, intent(out) :: pressure(:), traction(:, :), gap(:), status(:), slip(:)
+      real(dp), allocatable, intent(out) :: pressure(:), traction(:, :), gap(:), status(:), slip(:), normal(:, :)
       real(dp) :: node_pressure, node_traction(3)
       integer :: p, i, node
       allocate (pressure(n_nodes), gap(n_nodes), slip(n_nodes), source=0.0_dp)
-      allocate (traction(3, n_nodes), source=0.0_dp)
+      allocate (traction(3, n_nodes), normal(3, n_nodes), source=0.0_dp)
       allocate (status(n_nodes), source=-1.0_dp)
       do p = 1, size(system%passes)
          associate (pass => system%passes(p))
@@ -512,6 +517,7 @@ contains
                if (status(node) >= 0.0_dp .and. pressure(node) >= node_pressure) cycle
                pressure(node) = node_pressure
                traction(:, node) = node_traction
+               normal(:, node) = merge(pass%result(i)%normal, [0.0_dp, 0.0_dp, 0.0_dp], pass%face(i) > 0)
                gap(node) = merge(pass%result(i)%gap, 0.0_dp, pass%face(i) > 0)
                status(node) = real(pass%result(i)%status, dp)
                slip(node) = pass%slip(i)
@@ -522,7 +528,8 @@ contains
 
    !> The slave nodes of pass `p` and, per node, the columns of `contact_table_labels`: gap
    !> (length; 0 for a node with no master face), pressure, tangential traction x y z
-   !> (force/area), accumulated slip (length) and status (0 open, 1 stick, 2 slip).
+   !> (force/area), accumulated slip (length), status (0 open, 1 stick, 2 slip) and the unit
+   !> normal x y z the traction is tangential to (out of the master body; 0 with no face).
    !> `pair` is the deck id of the pass's contact pair.
    subroutine contact_pass_table(system, p, pair_index, nodes, values)
       type(contact_system_t), intent(in) :: system
@@ -534,12 +541,13 @@ contains
       associate (pass => system%passes(p))
          pair_index = pass%pair
          nodes = pass%slave_nodes
-         allocate (values(7, size(nodes)))
+         allocate (values(size(contact_table_labels), size(nodes)))
          do i = 1, size(nodes)
             values(1, i) = merge(pass%result(i)%gap, 0.0_dp, pass%face(i) > 0)
             call interface_traction(pass, i, values(2, i), values(3:5, i))
             values(6, i) = pass%slip(i)
             values(7, i) = real(pass%result(i)%status, dp)
+            values(8:10, i) = merge(pass%result(i)%normal, [0.0_dp, 0.0_dp, 0.0_dp], pass%face(i) > 0)
          end do
       end associate
    end subroutine contact_pass_table

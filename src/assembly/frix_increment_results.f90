@@ -16,12 +16,12 @@ module frix_increment_results
    end type named_field_t
 
    !> The contact table of one pass: its slave nodes and, per node, the columns of
-   !> contact_table_labels (gap, pressure, traction x y z, slip, status); the committed slip
+   !> contact_table_labels (gap, pressure, traction x y z, slip, status, normal x y z); the committed slip
    !> history of the pass (restart data).
    type :: contact_pass_results_t
       integer :: pair_id = 0                 !! the deck's pair id
       integer, allocatable :: nodes(:)       !! internal node numbers of the slave nodes
-      real(dp), allocatable :: values(:, :)  !! (7, n_slave_nodes)
+      real(dp), allocatable :: values(:, :)  !! (10, n_slave_nodes)
       real(dp), allocatable :: history(:, :) !! the pass's slip history, as restart reads it
    end type contact_pass_results_t
 
@@ -52,8 +52,9 @@ module frix_increment_results
       logical :: has_contact = .false.
       type(contact_pass_results_t), allocatable :: contact(:)   !! one per contact pass
       !> per node, over all passes: pressure, traction (3, n), gap, status (0 open, 1 stick,
-      !> 2 slip), slip; on nodes that are no pass's slave node the status is -1, the rest zero
-      real(dp), allocatable :: contact_pressure(:), contact_traction(:, :), contact_gap(:)
+      !> 2 slip), slip, normal (3, n: unit, out of the master body, the traction tangential to
+      !> it); on nodes that are no pass's slave node the status is -1, the rest zero
+      real(dp), allocatable :: contact_pressure(:), contact_traction(:, :), contact_gap(:), contact_normal(:, :)
       real(dp), allocatable :: contact_status(:), contact_slip(:)
    end type increment_results_t
 end module frix_increment_results

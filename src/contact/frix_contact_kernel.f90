@@ -24,7 +24,9 @@
 !> Smoothed normals (optional: x_ring and patch_faces given): the normal field of the master
 !>   surface is made continuous across its facets by interpolating averaged nodal normals,
 !>   n(xi) = m/|m|, m = sum_a N_a(xi) n_a, n_a = the normalised sum of the unit normals at node a
-!>   of the patch faces around it (the nodal-normal field of Abaqus' finite-sliding surfaces;
+!>   of the patch faces around it (the patch is the caller's: frix_contact_patches keeps the
+!>   adjacent faces within the pair's feature angle, NORMALS Auto, or all of them, Smoothed;
+!>   the nodal-normal field of Abaqus' finite-sliding surfaces;
 !>   Yang, Laursen & Meng, IJNME 62 (2005), and Wriggers 2006, 9.5, for the smoothing idea).
 !>   The contact point xi* is the normal projection along that field, x_s - x(xi*) parallel
 !>   to n(xi*): r_k = d . a_k - (d . n)(n . a_k) = 0 (d = x_s - x(xi), k = 1, 2), solved by

@@ -10,7 +10,14 @@ module frix_contact_parameters
    implicit none
    private
 
-   public :: contact_parameters_t, new_contact_parameters, default_edge_tolerance
+   public :: contact_parameters_t, new_contact_parameters, default_edge_tolerance, default_feature_angle
+
+   !> Default feature angle of NORMALS Auto (degrees): adjacent master faces whose reference
+   !> normals differ by at most this share averaged nodal normals, sharper edges keep facet
+   !> normals. 30 degrees smooths a circle meshed with more than 12 faces per full turn
+   !> (360/12 = 30) and keeps right-angled (90 degrees) and 45-degree edges sharp
+   !> (docs/contact.md, "Normals").
+   real(dp), parameter :: default_feature_angle = 30.0_dp
 
    !> Default of `edge_tolerance` (parent coordinates: 1e-6 of half a face).
    real(dp), parameter :: default_edge_tolerance = 1.0e-6_dp
@@ -28,9 +35,14 @@ module frix_contact_parameters
       real(dp) :: gap_tolerance = 0.0_dp
       !> A closest point with |xi_k| <= 1 + edge_tolerance counts as inside the face.
       real(dp) :: edge_tolerance = default_edge_tolerance
-      !> NORMALS Smoothed: the master surface's normal field is interpolated from averaged
-      !> nodal normals (frix_contact_kernel), continuous across faces; .false.: facet normals
+      !> NORMALS Smoothed or Auto: the master surface's normal field is interpolated from
+      !> averaged nodal normals (frix_contact_kernel); .false.: facet normals (NORMALS Facet)
       logical :: smoothed_normals = .false.
+      !> with smoothed_normals: a face's nodal normals average the adjacent faces whose
+      !> reference normal is within this angle of its own (degrees; 180, every adjacent face:
+      !> NORMALS Smoothed, continuous across all faces; NORMALS Auto: default_feature_angle or
+      !> FEATURE_ANGLE, facet-like across sharper edges; frix_contact_patches)
+      real(dp) :: feature_angle = 180.0_dp
       class(friction_law_t), allocatable :: friction   !! Coulomb or frictionless
    end type contact_parameters_t
 

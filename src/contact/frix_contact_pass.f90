@@ -40,7 +40,8 @@ module frix_contact_pass
       real(dp), allocatable :: interface_force(:, :)
       integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
-      !> smoothed normals (NORMALS Smoothed): the patch of every master face
+      !> smoothed normals (NORMALS Smoothed or Auto): the patch of every master face (within the
+      !> pair's feature angle)
       logical :: smooth = .false.
       type(surface_patches_t) :: patches
       ! the current iterate

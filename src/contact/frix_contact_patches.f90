@@ -3,20 +3,29 @@
 !> A master surface is a list of HEX8 element faces; as contact faces they are (4, n) mesh node
 !> numbers in outward (HEX8 face) order, so that the face normal points out of the master body
 !> (docs/contact.md, "Kinematics"). The patch of face f is the set of faces that share a node
-!> with f: the averaged nodal normals of f's 4 nodes (NORMALS Smoothed, frix_contact_kernel's
-!> patch_normals) depend on the nodes of that patch, so they enter the kernel's tangent: f's
-!> own 4 nodes and its ring, the patch's other nodes (12 on a structured surface, at most
-!> max_ring_nodes).
+!> with f and whose reference unit normal at the face centre makes an angle of at most the
+!> feature angle with f's (NORMALS Auto; 180 degrees, every face sharing a node, for NORMALS
+!> Smoothed): the averaged nodal normals of f's 4 nodes (frix_contact_kernel's patch_normals)
+!> are averaged over that patch, so that across an edge sharper than the feature angle f's
+!> nodal normals come from f's side only (facet-like), and they enter the kernel's tangent:
+!> f's own 4 nodes and its ring, the patch's other nodes (12 on a structured surface, at most
+!> max_ring_nodes). The decision is taken once, in the reference configuration.
 module frix_contact_patches
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_kinds, only: dp
    use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
+   use frix_face_projection, only: face_normal
    use frix_contact_kernel, only: max_ring_nodes
    implicit none
    private
 
    public :: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, check_patch_rings
-   public :: ring_nodes_of, patch_faces_of
+   public :: ring_nodes_of, patch_faces_of, all_faces_angle
+
+   !> A feature angle (degrees) at or above which every face sharing a node is in the patch
+   !> (NORMALS Smoothed), without computing an angle: bit-for-bit the unfiltered patches.
+   real(dp), parameter :: all_faces_angle = 180.0_dp
 
    !> The patch of every face of a surface, compressed rows over the faces:
    !> ring_nodes(ring_start(f) + 1 : ring_start(f + 1)) are the mesh numbers of face f's ring
@@ -41,25 +50,47 @@ contains
       end do
    end function surface_faces
 
-   !> The patch of every face of a surface (faces(4, n), mesh node numbers).
-   pure subroutine surface_patches(n_nodes, faces, patches)
-      integer, intent(in) :: n_nodes          !! nodes of the mesh
+   !> The patch of every face of a surface (faces(4, n), mesh node numbers): the faces sharing
+   !> a node with it within the feature angle (reference centre normals).
+   pure subroutine surface_patches(coords, faces, feature_angle, patches)
+      real(dp), intent(in) :: coords(:, :)    !! reference coordinates (3, n_nodes)
       integer, intent(in) :: faces(:, :)      !! (4, n_faces)
+      real(dp), intent(in) :: feature_angle   !! degrees; >= all_faces_angle: no filtering
       type(surface_patches_t), intent(out) :: patches
       integer, allocatable :: node_start(:), node_faces(:), adjacent(:), ring(:), local(:, :)
+      real(dp), allocatable :: centre_normal(:, :)
       integer :: n_faces, f
       n_faces = size(faces, 2)
-      call faces_around_nodes(n_nodes, faces, node_start, node_faces)
+      call faces_around_nodes(size(coords, 2), faces, node_start, node_faces)
+      allocate (centre_normal(3, n_faces))
+      do f = 1, n_faces
+         centre_normal(:, f) = face_normal(coords(:, faces(:, f)), [0.0_dp, 0.0_dp])
+      end do
       allocate (patches%ring_start(n_faces + 1), patches%patch_start(n_faces + 1))
       allocate (patches%ring_nodes(max(1, max_ring_nodes*n_faces)), patches%patch_faces(4, max(1, 9*n_faces)))
       patches%ring_start(1) = 0
       patches%patch_start(1) = 0
       do f = 1, n_faces
          adjacent = adjacent_faces(faces, f, node_start, node_faces)
+         if (feature_angle < all_faces_angle) &
+            adjacent = pack(adjacent, adjacent == f .or. &
+                            within_feature_angle(centre_normal(:, f), centre_normal(:, adjacent), feature_angle))
          call local_patch(faces, f, adjacent, ring, local)
          call append_patch(patches, f, ring, local)
       end do
    end subroutine surface_patches
+
+   !> Whether each unit normal normals(:, k) makes an angle of at most feature_angle (degrees)
+   !> with the unit normal `own`: acos(own . n) <= feature_angle (the cosine clamped to [-1, 1]).
+   pure function within_feature_angle(own, normals, feature_angle) result(within)
+      real(dp), intent(in) :: own(3), normals(:, :), feature_angle
+      logical :: within(size(normals, 2))
+      real(dp), parameter :: degree = acos(-1.0_dp)/180.0_dp
+      integer :: k
+      do k = 1, size(normals, 2)
+         within(k) = acos(max(-1.0_dp, min(1.0_dp, dot_product(own, normals(:, k))))) <= feature_angle*degree
+      end do
+   end function within_feature_angle
 
    !> The faces around each node as compressed rows over the mesh's nodes:
    !> node_faces(node_start(n) + 1 : node_start(n + 1)) hold node n's faces, in face order.
@@ -186,15 +217,17 @@ contains
       f = largest_ring_face(patches)
       n_ring = patches%ring_start(f + 1) - patches%ring_start(f)
       if (n_ring > max_ring_nodes) &
-         call fatal_error(error, 'NORMALS Smoothed: a master face has '//to_string(n_ring)// &
+         call fatal_error(error, 'smoothed normals: a master face has '//to_string(n_ring)// &
                           ' nodes around it, at most '//to_string(max_ring_nodes)//' are supported')
    end subroutine check_patch_rings
 
-   !> The master surface's largest smoothed-normal ring: its size and the face that has it
-   !> (for the deck reader's check of NORMALS Smoothed against max_ring_nodes).
-   subroutine largest_patch_ring(mesh, surface, n_ring, face_nodes)
+   !> The master surface's largest smoothed-normal ring (patches within the feature angle): its
+   !> size and the face that has it (for the deck reader's check of NORMALS Smoothed and Auto
+   !> against max_ring_nodes).
+   subroutine largest_patch_ring(mesh, surface, feature_angle, n_ring, face_nodes)
       type(mesh_t), intent(in) :: mesh
       type(surface_t), intent(in) :: surface
+      real(dp), intent(in) :: feature_angle   !! degrees (surface_patches)
       integer, intent(out) :: n_ring          !! ring nodes of that face
       integer, intent(out) :: face_nodes(4)   !! mesh node numbers of that face
       integer, allocatable :: faces(:, :)
@@ -204,7 +237,7 @@ contains
       face_nodes = 0
       if (size(surface%elements) == 0) return
       faces = surface_faces(mesh, surface)
-      call surface_patches(mesh%n_nodes, faces, patches)
+      call surface_patches(mesh%coords, faces, feature_angle, patches)
       f = largest_ring_face(patches)
       n_ring = patches%ring_start(f + 1) - patches%ring_start(f)
       face_nodes = faces(:, f)

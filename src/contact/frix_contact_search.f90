@@ -5,7 +5,7 @@
 !> or corner point when the node lies beyond it) is nearest; the node's current face is kept
 !> on ties, so that a node on an edge shared by two faces does not chatter between them. With
 !> smoothed normals the nearest face whose normal projection along the smoothed normals lies
-!> inside it comes first (docs/contact.md, "Smoothed normals"). A face is a candidate when its
+!> inside it comes first (docs/contact.md, "Normals"). A face is a candidate when its
 !> current bounding box inflated by the search band holds the node and the node is at most the
 !> band above it (gap <= band). Candidates come from a uniform bucket grid of the boxes,
 !> rebuilt at every search (linear cost).
@@ -40,7 +40,9 @@ module frix_contact_search
    !> The master surface of a pass at the current displacements.
    type :: master_state_t
       real(dp), allocatable :: x_faces(:, :, :)     !! (3, 4, n_faces) current face nodes
-      real(dp), allocatable :: node_normal(:, :)    !! (3, n_nodes) smoothed nodal normals
+      !> (3, 4, n_faces) smoothed nodal normals of each face's nodes: per face, since with a
+      !> feature angle a node on a sharp edge has one normal on each side of it
+      real(dp), allocatable :: face_normals(:, :, :)
       type(face_grid_t) :: grid
    end type master_state_t
 
@@ -66,10 +68,10 @@ contains
       end do
       call build_face_grid(master%x_faces, pass%band, master%grid)
       if (pass%smooth) then
-         ! the averaged normal of every master node, once per search
-         allocate (master%node_normal(3, size(coords, 2)), source=0.0_dp)
+         ! the averaged nodal normals of every master face, once per search
+         allocate (master%face_normals(3, 4, size(pass%faces, 2)))
          do f = 1, size(pass%faces, 2)
-            master%node_normal(:, pass%faces(:, f)) = face_nodal_normals(coords, u, pass, f)
+            master%face_normals(:, :, f) = face_nodal_normals(coords, u, pass, f)
          end do
       end if
       do i = 1, size(pass%slave_nodes)
@@ -101,7 +103,7 @@ contains
             if (any(x_slave < master%grid%lower(:, f)) .or. any(x_slave > master%grid%upper(:, f))) cycle
             x_face = master%x_faces(:, :, f)
             if (pass%smooth) then
-               call smooth_candidate(x_face, master%node_normal(:, pass%faces(:, f)), x_slave, edge_tolerance, &
+               call smooth_candidate(x_face, master%face_normals(:, :, f), x_slave, edge_tolerance, &
                                      distance, gap, inside)
                if (inside .and. gap <= pass%band) call keep_nearer(f, distance, current, best_inside, best_inside_face)
             end if

@@ -12,9 +12,9 @@ module frix_deck_contact
    use frix_friction_law_registry, only: create_pair_friction_law, friction_property_specs, default_friction_law
    use frix_normal_contact_law_registry, only: create_normal_contact_law, normal_property_specs, &
                                                default_normal_method
-   use frix_contact_parameters, only: new_contact_parameters
+   use frix_contact_parameters, only: new_contact_parameters, default_feature_angle
    use frix_contact_kernel, only: max_ring_nodes
-   use frix_contact_patches, only: largest_patch_ring
+   use frix_contact_patches, only: largest_patch_ring, all_faces_angle
    use frix_model, only: model_t, contact_pair_t
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, require, s_contact
@@ -22,6 +22,10 @@ module frix_deck_contact
    private
 
    public :: read_contact_pairs
+
+   !> NORMALS choices (0: not given, Auto for a deformable master)
+   integer, parameter :: normals_default = 0, normals_facet = 1, normals_smoothed = 2, normals_auto = 3
+   character(len=8), parameter :: normals_names(3) = [character(len=8) :: 'Facet', 'Smoothed', 'Auto']
 
    !> What a pair's line gives after its surfaces, as read.
    type :: pair_options_t
@@ -33,11 +37,14 @@ module frix_deck_contact
       integer :: method_token = 0            !! token of METHOD's value, 0 if not given
       integer :: law_token = 0               !! token of LAW's value, 0 if not given
       integer :: normals_token = 0           !! token of NORMALS' value
+      integer :: normals = normals_default   !! normals_facet, normals_smoothed, normals_auto
+      integer :: feature_token = 0           !! token of FEATURE_ANGLE's value, 0 if not given
+      real(dp) :: feature_angle = default_feature_angle   !! degrees
       real(dp) :: plane_point(3) = 0.0_dp, plane_normal(3) = 0.0_dp
       real(dp) :: eps_t = 0.0_dp
       real(dp) :: gap_tolerance = 0.0_dp
       integer :: passes = 1
-      logical :: has_eps_t = .false., has_point = .false., has_normal = .false., smoothed = .false.
+      logical :: has_eps_t = .false., has_point = .false., has_normal = .false.
    end type pair_options_t
 
 contains
@@ -45,8 +52,8 @@ contains
    !> CONTACT CONDITIONS: one pair per line,
    !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE [POINT x y z NORMAL nx ny nz]
    !>  [METHOD Penalty] EPSN <eps_N> [EPST <eps_T>] [MU <mu>] [LAW Coulomb|Frictionless]
-   !>  [GAPTOL <g>] [PASSES 1|2] [NORMALS Facet|Smoothed]`, the keywords after the surfaces
-   !> in any order. The normal law's properties (EPSN) and the METHOD a pair without one gets
+   !>  [GAPTOL <g>] [PASSES 1|2] [NORMALS Facet|Smoothed|Auto] [FEATURE_ANGLE <degrees>]`, the
+   !> keywords after the surfaces in any order (a deformable master without NORMALS: Auto). The normal law's properties (EPSN) and the METHOD a pair without one gets
    !> come from the normal law registry; the friction properties (MU) and the law a pair without LAW gets from the
    !> friction registry (MU > 0: Coulomb; else frictionless, EPST not needed).
    subroutine read_contact_pairs(reader, model)
@@ -176,7 +183,7 @@ contains
    end subroutine read_pair_surfaces
 
    !> The keywords after the surfaces, in any order: the rigid plane, the laws, their
-   !> properties (as the registries describe them), GAPTOL, PASSES, NORMALS.
+   !> properties (as the registries describe them), GAPTOL, PASSES, NORMALS, FEATURE_ANGLE.
    subroutine read_pair_options(reader, line, position, rigid, options, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(deck_line_t), intent(in) :: line
@@ -222,6 +229,11 @@ contains
             call reader%take_word(line, position, 'a friction law', options%law, ok)
          case ('NORMALS')
             call read_normals(reader, line, position, options, ok)
+         case ('FEATURE_ANGLE')
+            options%feature_token = position
+            call reader%take_real(line, position, 'FEATURE_ANGLE', options%feature_angle, ok)
+            call require(reader, ok, options%feature_angle > 0.0_dp .and. options%feature_angle < 180.0_dp, &
+                         line, position - 1, 'FEATURE_ANGLE must lie between 0 and 180 degrees (exclusive)')
          case default
             k = keyword_index(spec_names(normal_specs), word)
             if (k > 0) then
@@ -235,29 +247,46 @@ contains
             end if
             call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
                                joined(spec_names(normal_specs))//', EPST, '//joined(spec_names(friction_specs))// &
-                               ', METHOD, LAW, GAPTOL, PASSES or NORMALS)')
+                               ', METHOD, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
             ok = .false.
          end select
       end do
    end subroutine read_pair_options
 
-   !> `NORMALS Facet|Smoothed` (after NORMALS); Smoothed needs a deformable master.
+   !> `NORMALS Facet|Smoothed|Auto` (after NORMALS); Smoothed and Auto need a deformable master.
    subroutine read_normals(reader, line, position, options, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(deck_line_t), intent(in) :: line
       integer, intent(inout) :: position
       type(pair_options_t), intent(inout) :: options
       logical, intent(inout) :: ok
-      integer :: choice
       options%normals_token = position
-      call reader%take_choice(line, position, 'Facet or Smoothed', [character(len=8) :: 'FACET', 'SMOOTHED'], &
-                              'NORMALS must be Facet or Smoothed', choice, ok)
-      options%smoothed = choice == 2
-      if (ok .and. options%smoothed .and. options%rigid) then
-         call reader%report(line, position - 1, 'NORMALS Smoothed needs a deformable master surface')
+      call reader%take_choice(line, position, 'Facet, Smoothed or Auto', &
+                              [character(len=8) :: 'FACET', 'SMOOTHED', 'AUTO'], &
+                              'NORMALS must be Facet, Smoothed or Auto', options%normals, ok)
+      if (ok .and. options%normals /= normals_facet .and. options%rigid) then
+         call reader%report(line, position - 1, 'NORMALS '//trim(normals_names(options%normals))// &
+                            ' needs a deformable master surface')
          ok = .false.
       end if
    end subroutine read_normals
+
+   !> FEATURE_ANGLE belongs to NORMALS Auto (given or the default of a deformable master).
+   subroutine check_feature_angle(reader, line, options, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      type(pair_options_t), intent(in) :: options
+      logical, intent(inout) :: ok
+      if (options%feature_token == 0 .or. .not. ok) return
+      if (options%rigid) then
+         call reader%report(line, options%feature_token - 1, 'FEATURE_ANGLE needs a deformable master surface')
+         ok = .false.
+      else if (options%normals == normals_facet .or. options%normals == normals_smoothed) then
+         call reader%report(line, options%feature_token - 1, 'FEATURE_ANGLE belongs to NORMALS Auto, not NORMALS '// &
+                            trim(normals_names(options%normals)))
+         ok = .false.
+      end if
+   end subroutine check_feature_angle
 
    !> The pair's laws, parameters, plane and passes from its options, in this order: the normal
    !> law, the rigid plane, the friction law and EPST, the parameters, the smoothed normals'
@@ -273,6 +302,8 @@ contains
       class(friction_law_t), allocatable :: friction
       type(error_t), allocatable :: error
       character(len=:), allocatable :: method, law
+      call check_feature_angle(reader, line, options, ok)
+      if (.not. ok) return
       pair%passes = options%passes
       pair%plane_point = options%plane_point
       pair%plane_normal = options%plane_normal
@@ -294,10 +325,34 @@ contains
       end if
       call new_contact_parameters(normal, options%eps_t, options%gap_tolerance, friction, pair%parameters, error)
       call report_error(reader, line, 1, error, ok)
-      if (ok .and. options%smoothed) &
-         call check_patch_ring(reader, model, line, options%normals_token, pair%master_surface, ok)
-      pair%parameters%smoothed_normals = options%smoothed
+      if (ok) call set_normals(reader, model, line, options, pair, ok)
    end subroutine make_pair_parameters
+
+   !> The pair's normal field: Facet; Smoothed (feature angle 180 degrees: every adjacent face);
+   !> Auto, the default of a deformable master (the feature angle given or the default), each
+   !> checked against the kernel's ring size on the master surface (and on the slave surface,
+   !> master of the second pass, with PASSES 2).
+   subroutine set_normals(reader, model, line, options, pair, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      type(pair_options_t), intent(in) :: options
+      type(contact_pair_t), intent(inout) :: pair
+      logical, intent(inout) :: ok
+      integer :: normals, token
+      normals = options%normals
+      if (normals == normals_default .and. .not. options%rigid) normals = normals_auto
+      pair%parameters%smoothed_normals = normals == normals_smoothed .or. normals == normals_auto
+      if (.not. pair%parameters%smoothed_normals) return
+      pair%parameters%feature_angle = all_faces_angle
+      if (normals == normals_auto) pair%parameters%feature_angle = options%feature_angle
+      token = max(1, options%normals_token)
+      call check_patch_ring(reader, model, line, token, normals, pair%parameters%feature_angle, &
+                            pair%master_surface, options%normals == normals_default, ok)
+      if (pair%passes == 2) &
+         call check_patch_ring(reader, model, line, token, normals, pair%parameters%feature_angle, &
+                               pair%slave_surface, options%normals == normals_default, ok)
+   end subroutine set_normals
 
    !> Report `error`, if allocated, at token `position` (ok false then).
    subroutine report_error(reader, line, position, error, ok)
@@ -334,18 +389,25 @@ contains
       call require(reader, ok, pair%passes /= 2, line, 1, 'PASSES 2 needs a deformable master surface')
    end subroutine check_rigid_plane
 
-   !> NORMALS Smoothed (its value at token `token`): the kernel's unknowns bound the nodes
-   !> around a face of the master surface (docs/contact.md).
-   subroutine check_patch_ring(reader, model, line, token, master_surface, ok)
+   !> NORMALS Smoothed or Auto (its value at token `token`, `default` when not given): the
+   !> kernel's unknowns bound the nodes around a face of the master surface within the feature
+   !> angle (docs/contact.md, "Normals").
+   subroutine check_patch_ring(reader, model, line, token, normals, feature_angle, master_surface, default, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(in) :: model
       type(deck_line_t), intent(in) :: line
-      integer, intent(in) :: token, master_surface
+      integer, intent(in) :: token, normals, master_surface
+      real(dp), intent(in) :: feature_angle   !! degrees
+      logical, intent(in) :: default
       logical, intent(inout) :: ok
+      character(len=:), allocatable :: what
       integer :: n_ring, face_nodes(4)
-      call largest_patch_ring(model%mesh, model%mesh%surfaces(master_surface), n_ring, face_nodes)
+      if (.not. ok) return
+      call largest_patch_ring(model%mesh, model%mesh%surfaces(master_surface), feature_angle, n_ring, face_nodes)
       if (n_ring <= max_ring_nodes) return
-      call reader%report(line, token, 'NORMALS Smoothed: the master face of nodes '// &
+      what = 'NORMALS '//trim(normals_names(normals))
+      if (default) what = what//' (the default; NORMALS Facet has no such limit)'
+      call reader%report(line, token, what//': the master face of nodes '// &
                          to_string(model%mesh%node_ids(face_nodes(1)))//' '// &
                          to_string(model%mesh%node_ids(face_nodes(2)))//' '// &
                          to_string(model%mesh%node_ids(face_nodes(3)))//' '// &

@@ -163,7 +163,7 @@ contains
       end do
       call contact_nodal_fields(state%contact, model%mesh%n_nodes, results%contact_pressure, &
                                 results%contact_traction, results%contact_gap, results%contact_status, &
-                                results%contact_slip)
+                                results%contact_slip, results%contact_normal)
    end subroutine collect_contact
 
    !> An error naming the node and direction of the first non-finite entry of a nodal field

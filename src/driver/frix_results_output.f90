@@ -208,6 +208,7 @@ contains
          call self%hdf5%add_contact_array('gap', results%contact_gap)
          call self%hdf5%add_contact_array('status', results%contact_status)
          call self%hdf5%add_contact_array('slip', results%contact_slip)
+         call self%hdf5%add_contact_array('normal', results%contact_normal)
          do p = 1, size(results%contact)
             call self%hdf5%add_contact_array('pass'//to_string(p)//'_history', results%contact(p)%history)
          end do
@@ -286,24 +287,29 @@ contains
          return
       end if
       write (self%contact_unit, '(a)') 'step,increment,time,pair,pass,node,x,y,z,gap,pressure,'// &
-         'traction_x,traction_y,traction_z,slip,status'
+         'traction_x,traction_y,traction_z,slip,status,normal_x,normal_y,normal_z'
       flush (self%contact_unit)   ! a run killed before its first increment leaves the header
    end subroutine open_contact_csv
 
+   !> One contact CSV row: step, increment, time, pair, pass, node, x y z, gap, pressure,
+   !> traction x y z, slip, status, normal x y z (the header of open_contact_csv).
    subroutine write_contact_csv(self, model, results, error)
       class(results_output_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       type(increment_results_t), intent(in) :: results
       type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: contact_row_format = &
+                                     '(i0,",",i0,",",es24.16e3,",",i0,",",i0,",",i0,9(",",es24.16e3),",",i0,'// &
+                                     '3(",",es24.16e3))'
       integer :: p, i, stat, node
       do p = 1, size(results%contact)
          associate (table => results%contact(p))
             do i = 1, size(table%nodes)
                node = table%nodes(i)
-               write (self%contact_unit, '(i0,",",i0,",",es24.16e3,",",i0,",",i0,",",i0,9(",",es24.16e3),",",i0)', &
-                      iostat=stat) results%step, results%increment, results%time, table%pair_id, p, &
+               write (self%contact_unit, contact_row_format, iostat=stat) results%step, results%increment, &
+                  results%time, table%pair_id, p, &
                   model%mesh%node_ids(node), model%mesh%coords(:, node) + results%displacement(:, node), &
-                  table%values(1:6, i), nint(table%values(7, i))
+                  table%values(1:6, i), nint(table%values(7, i)), table%values(8:10, i)
                if (stat /= 0) then
                   call fatal_error(error, 'frix: cannot write the contact CSV file')
                   return

@@ -14,7 +14,7 @@ module test_contact_fixtures
    private
 
    public :: warped_face, flat_face, make_parameters, check_face_tangent, check_plane_tangent
-   public :: asymmetry, slave_below, grid_patch, slave_below_smoothed, grid_faces
+   public :: asymmetry, slave_below, grid_patch, slave_below_smoothed, grid_faces, fold_surface, profile_normal
 
    !> A warped, skewed face (no two edges parallel, nodes not coplanar), counter-clockwise
    !> seen from +z: outward normal roughly +z. Size about 2.
@@ -115,6 +115,43 @@ contains
          x(3) = 0.15_dp*(x(1) - 1.5_dp)**2 - 0.1_dp*(x(2) - 1.5_dp)**2 + 0.05_dp*x(1)*x(2)
       end function grid_point
    end subroutine grid_patch
+
+   !> A master surface with a 90-degree fold and a gentle curve: a profile in the x-z plane of
+   !> 6 unit segments, segment s leaving its start point P(s - 1) in the direction
+   !> (cos t_s, 0, sin t_s), t = 0, 0, -90, -100, -110, -120 degrees from P0 = (-2, 0, 0) (a
+   !> convex 90-degree edge at P2 = origin, then 10-degree turns), extruded over y = 0, 1, 2.
+   !> Node 1 + k + 7 r is P(k) at y = r; face s + 6 (r - 1) (s = 1..6, r = 1, 2) has the
+   !> corners P(s - 1), P(s) at y = r - 1, then P(s), P(s - 1) at y = r, outward normal
+   !> profile_normal(t_s) = (-sin t_s, 0, cos t_s).
+   subroutine fold_surface(coords, faces)
+      real(dp), intent(out) :: coords(3, 21)
+      integer, intent(out) :: faces(4, 12)
+      real(dp), parameter :: turn(6) = [0.0_dp, 0.0_dp, -90.0_dp, -100.0_dp, -110.0_dp, -120.0_dp]
+      real(dp), parameter :: degree = acos(-1.0_dp)/180.0_dp
+      real(dp) :: point(3)
+      integer :: k, r, s
+      do r = 0, 2
+         point = [-2.0_dp, real(r, dp), 0.0_dp]
+         coords(:, 1 + 7*r) = point
+         do k = 1, 6
+            point = point + [cos(turn(k)*degree), 0.0_dp, sin(turn(k)*degree)]
+            coords(:, 1 + k + 7*r) = point
+         end do
+      end do
+      do r = 1, 2
+         do s = 1, 6
+            faces(:, s + 6*(r - 1)) = [s + 7*(r - 1), s + 1 + 7*(r - 1), s + 1 + 7*r, s + 7*r]
+         end do
+      end do
+   end subroutine fold_surface
+
+   !> The outward unit normal (-sin t, 0, cos t) of fold_surface's segments at angle t (degrees).
+   pure function profile_normal(turn) result(normal)
+      real(dp), intent(in) :: turn
+      real(dp) :: normal(3)
+      real(dp), parameter :: degree = acos(-1.0_dp)/180.0_dp
+      normal = [-sin(turn*degree), 0.0_dp, cos(turn*degree)]
+   end function profile_normal
 
    !> The faces of an (n + 1) x (n + 1) grid of nodes numbered 1 + i + (n + 1) j (i, j = 0..n,
    !> i along x): face 1 + i + n j has corners (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1),

@@ -3,7 +3,11 @@
 !> 3 x 3 block of faces around it (corner, edge, centre face), so its ring has 9 - 4 = 5,
 !> 12 - 4 = 8 or 16 - 4 = 12 nodes; every patch face, mapped back from local to mesh node
 !> numbers, is a surface face sharing a node with the face; a pinwheel of 8 faces around one
-!> node has 17 - 4 = 13 ring nodes per face, one more than the kernel takes.
+!> node has 17 - 4 = 13 ring nodes per face, one more than the kernel takes. Feature angle: on
+!> test_contact_fixtures' fold_surface (a 90-degree fold, then 10-degree turns) the nodal normal
+!> of a face is the normalised sum of the unit normals of the faces kept around the node, so
+!> exactly the facet normal at the fold (only the face's own side kept) and the bisector
+!> profile_normal(t_s + 5 degrees) between two 10-degree-apart segments.
 module test_contact_patches
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -12,8 +16,9 @@ module test_contact_patches
    use frix_mesh, only: mesh_t, surface_t
    use frix_face_projection, only: face_normal
    use frix_contact_patches, only: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, &
-                                   check_patch_rings, ring_nodes_of, patch_faces_of
-   use test_contact_fixtures, only: grid_faces
+                                   check_patch_rings, ring_nodes_of, patch_faces_of, all_faces_angle
+   use frix_contact_kernel, only: patch_normals
+   use test_contact_fixtures, only: grid_faces, fold_surface, profile_normal
    implicit none
    private
 
@@ -26,7 +31,10 @@ contains
       tests = [new_unittest('surface faces: top faces of a block, outward normal', test_surface_faces), &
                new_unittest('structured surface: ring sizes 5 / 8 / 12 and local patch faces', test_structured), &
                new_unittest('largest ring: the centre face, within the kernel''s limit', test_largest_ring), &
-               new_unittest('pinwheel of 8 faces: 13 ring nodes, error', test_pinwheel)]
+               new_unittest('pinwheel of 8 faces: 13 ring nodes, error', test_pinwheel), &
+               new_unittest('feature angle 30: facet normals at a 90-degree fold, averaged on a curve', &
+                            test_fold_and_curve), &
+               new_unittest('feature angle just below / above a 10-degree edge flips the patch', test_angle_flip)]
    end subroutine collect_contact_patches
 
    !> A 3 x 3 x 1 block of unit HEX8 (nodes 1 + i + 4 j + 16 k) and its top surface (face 2).
@@ -80,7 +88,7 @@ contains
       integer :: faces(4, 9), f
       integer, parameter :: ring_size(9) = [5, 8, 5, 8, 12, 8, 5, 8, 5], patch_size(9) = [4, 6, 4, 6, 9, 6, 4, 6, 4]
       faces = grid_faces(3)
-      call surface_patches(16, faces, patches)
+      call surface_patches(flat_grid(3), faces, all_faces_angle, patches)
       do f = 1, 9
          call check(error, size(ring_nodes_of(patches, f)) == ring_size(f) .and. &
                     size(patch_faces_of(patches, f), 2) == patch_size(f), &
@@ -128,11 +136,11 @@ contains
       type(surface_patches_t) :: patches
       integer :: n_ring, face_nodes(4)
       call block_mesh(mesh, top)
-      call largest_patch_ring(mesh, top, n_ring, face_nodes)
+      call largest_patch_ring(mesh, top, all_faces_angle, n_ring, face_nodes)
       call check(error, n_ring == 12 .and. all(face_nodes == [22, 23, 27, 26]), &
                  'the centre face with 12 ring nodes, got '//to_string(n_ring))
       if (allocated(error)) return
-      call surface_patches(mesh%n_nodes, surface_faces(mesh, top), patches)
+      call surface_patches(mesh%coords, surface_faces(mesh, top), all_faces_angle, patches)
       call check_patch_rings(patches, error)
    end subroutine test_largest_ring
 
@@ -140,12 +148,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: ring_error
       type(surface_patches_t) :: patches
+      real(dp) :: coords(3, 17)
       integer :: faces(4, 8), k, f
-      ! node 1 in the centre, rim nodes 2..17; face k spans rim nodes 2k .. 2k + 2
+      ! node 1 in the centre, rim nodes 2..17 on a circle in z = 0, counter-clockwise; face k
+      ! spans rim nodes 2k .. 2k + 2
+      coords(:, 1) = 0.0_dp
+      do k = 2, 17
+         coords(:, k) = [cos((k - 2)*acos(-1.0_dp)/8), sin((k - 2)*acos(-1.0_dp)/8), 0.0_dp]
+      end do
       do k = 1, 8
          faces(:, k) = [1, 2*k, 2*k + 1, 2 + mod(2*k, 16)]
       end do
-      call surface_patches(17, faces, patches)
+      call surface_patches(coords, faces, all_faces_angle, patches)
       do f = 1, 8
          call check(error, size(ring_nodes_of(patches, f)) == 13 .and. size(patch_faces_of(patches, f), 2) == 8, &
                     'face '//to_string(f)//': 13 ring nodes, 8 patch faces')
@@ -155,6 +169,88 @@ contains
       end do
       call check_patch_rings(patches, ring_error)
       call check_message_contains(error, ring_error, &
-                                  'NORMALS Smoothed: a master face has 13 nodes around it, at most 12 are supported')
+                                  'smoothed normals: a master face has 13 nodes around it, at most 12 are supported')
+      if (allocated(error)) return
+      ! flat: the default feature angle keeps every face
+      call surface_patches(coords, faces, 30.0_dp, patches)
+      call check(error, size(ring_nodes_of(patches, 1)) == 13, 'feature angle 30, flat: 13 ring nodes')
    end subroutine test_pinwheel
+
+   !> The nodes of an (n + 1) x (n + 1) unit grid in z = 0, numbered as grid_faces.
+   pure function flat_grid(n) result(coords)
+      integer, intent(in) :: n
+      real(dp) :: coords(3, (n + 1)**2)
+      integer :: i, j
+      do j = 0, n
+         do i = 0, n
+            coords(:, 1 + i + (n + 1)*j) = [real(i, dp), real(j, dp), 0.0_dp]
+         end do
+      end do
+   end function flat_grid
+
+   !> Face f's averaged nodal normals (3, 4) with the patches of feature angle `angle`.
+   function fold_nodal_normals(angle, f) result(nodal)
+      real(dp), intent(in) :: angle
+      integer, intent(in) :: f
+      real(dp) :: nodal(3, 4), coords(3, 21)
+      type(surface_patches_t) :: patches
+      integer :: faces(4, 12)
+      call fold_surface(coords, faces)
+      call surface_patches(coords, faces, angle, patches)
+      nodal = patch_normals(coords(:, faces(:, f)), coords(:, ring_nodes_of(patches, f)), patch_faces_of(patches, f))
+   end function fold_nodal_normals
+
+   !> Whether face f's nodal normals are `start` at its nodes 1 and 4 (profile point P(s - 1))
+   !> and `finish` at nodes 2 and 3 (P(s)), to 1e-14; else an error naming `what`.
+   subroutine check_nodal(error, nodal, start, finish, what)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in) :: nodal(3, 4), start(3), finish(3)
+      character(len=*), intent(in) :: what
+      real(dp) :: deviation
+      deviation = max(maxval(abs(nodal(:, 1) - start)), maxval(abs(nodal(:, 4) - start)), &
+                      maxval(abs(nodal(:, 2) - finish)), maxval(abs(nodal(:, 3) - finish)))
+      call check(error, deviation <= 1.0e-14_dp, what//': nodal normals off by '//to_string(deviation))
+   end subroutine check_nodal
+
+   subroutine test_fold_and_curve(error)
+      type(error_t), allocatable, intent(out) :: error
+      ! face 2 (t = 0) ends at the fold: its own normal +z there with the feature angle,
+      ! the bisector of +z and +x (t = -45) without
+      call check_nodal(error, fold_nodal_normals(30.0_dp, 2), profile_normal(0.0_dp), profile_normal(0.0_dp), &
+                       'face 2, angle 30')
+      if (allocated(error)) return
+      call check_nodal(error, fold_nodal_normals(all_faces_angle, 2), profile_normal(0.0_dp), &
+                       profile_normal(-45.0_dp), 'face 2, angle 180')
+      if (allocated(error)) return
+      ! face 3 (t = -90) starts at the fold (facet side) and meets face 4 (t = -100) smoothly
+      call check_nodal(error, fold_nodal_normals(30.0_dp, 3), profile_normal(-90.0_dp), profile_normal(-95.0_dp), &
+                       'face 3, angle 30')
+      if (allocated(error)) return
+      ! on the curve the feature angle changes nothing
+      call check_nodal(error, fold_nodal_normals(30.0_dp, 4), profile_normal(-95.0_dp), profile_normal(-105.0_dp), &
+                       'face 4, angle 30')
+      if (allocated(error)) return
+      call check(error, maxval(abs(fold_nodal_normals(30.0_dp, 10) - fold_nodal_normals(all_faces_angle, 10))) &
+                 == 0.0_dp, 'face 10 (curve, second row): angle 30 and 180 bit-for-bit')
+   end subroutine test_fold_and_curve
+
+   subroutine test_angle_flip(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(surface_patches_t) :: below, above
+      real(dp) :: coords(3, 21)
+      integer :: faces(4, 12)
+      call fold_surface(coords, faces)
+      call surface_patches(coords, faces, 9.99_dp, below)
+      call surface_patches(coords, faces, 10.01_dp, above)
+      ! face 4 and its neighbours along the curve are 10 degrees apart
+      call check(error, size(patch_faces_of(below, 4), 2) == 2 .and. size(patch_faces_of(above, 4), 2) == 6, &
+                 'face 4: 2 patch faces at 9.99 degrees, 6 at 10.01, got '// &
+                 to_string(size(patch_faces_of(below, 4), 2))//' and '//to_string(size(patch_faces_of(above, 4), 2)))
+      if (allocated(error)) return
+      call check_nodal(error, fold_nodal_normals(9.99_dp, 4), profile_normal(-100.0_dp), profile_normal(-100.0_dp), &
+                       'face 4, angle 9.99')
+      if (allocated(error)) return
+      call check_nodal(error, fold_nodal_normals(10.01_dp, 4), profile_normal(-95.0_dp), profile_normal(-105.0_dp), &
+                       'face 4, angle 10.01')
+   end subroutine test_angle_flip
 end module test_contact_patches

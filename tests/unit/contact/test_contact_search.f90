@@ -13,10 +13,10 @@ module test_contact_search
    use frix_strings, only: to_string
    use frix_face_projection, only: closest_point_in_face, face_position, face_normal
    use frix_contact_kernel, only: smooth_normal_at
-   use frix_contact_patches, only: surface_patches
+   use frix_contact_patches, only: surface_patches, all_faces_angle
    use frix_contact_pass, only: contact_pass_t, start_pass_state
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, face_nodal_normals
-   use test_contact_fixtures, only: grid_faces
+   use test_contact_fixtures, only: grid_faces, fold_surface
    implicit none
    private
 
@@ -34,7 +34,8 @@ contains
                new_unittest('wavy 10 x 10 surface: bucket grid = brute force', test_brute_force), &
                new_unittest('initial anchors: closest point; no face, no anchor', test_anchors), &
                new_unittest('smoothed normals: face and anchor of the normal projection', test_smoothed), &
-               new_unittest('rigid plane: the anchors are the foot points', test_plane)]
+               new_unittest('rigid plane: the anchors are the foot points', test_plane), &
+               new_unittest('feature angle 30: faces on both sides of a 90-degree fold', test_fold)]
    end subroutine collect_contact_search
 
    !> A pass of slave points against the n x n faces of a grid of nodes 1 + i + (n + 1) j at
@@ -176,7 +177,7 @@ contains
       type(contact_pass_t) :: pass
       real(dp), parameter :: xi(2) = [0.9_dp, -0.2_dp], depth = 0.05_dp
       call grid_pass(3, reshape([0.0_dp, 0.0_dp, 0.0_dp], [3, 1]), coords, pass, .true.)
-      call surface_patches(size(coords, 2), pass%faces, pass%patches)
+      call surface_patches(coords, pass%faces, all_faces_angle, pass%patches)
       pass%smooth = .true.
       allocate (zero(size(coords)), source=0.0_dp)
       ! below the point xi of the centre face 5, along the smoothed normal there
@@ -189,6 +190,47 @@ contains
       if (allocated(error)) return
       call check_close(error, pass%anchor_xi(2, 1), xi(2), 0.0_dp, 1.0e-10_dp, 'anchor xi2')
    end subroutine test_smoothed
+
+   !> fold_surface (top z = 0 for x <= 0, side x = 0 below) with feature angle 30: the nodal
+   !> normals are facet-like at the fold, so a node above the top next to the fold gets the
+   !> top face 2, one beside the side gets face 3, one above the convex edge (no normal
+   !> projection inside a face, the facet rule decides) one of the two, and each initial anchor
+   !> is the normal projection along the smoothed normals (the facet closest point on face 2,
+   !> whose kept neighbours are coplanar).
+   subroutine test_fold(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_pass_t) :: pass
+      real(dp) :: coords(3, 24), offset(3), normal(3)
+      real(dp), allocatable :: zero(:)
+      integer :: faces(4, 12)
+      real(dp), parameter :: slaves(3, 3) = reshape([-0.1_dp, 0.5_dp, 0.05_dp, 0.05_dp, 0.5_dp, -0.1_dp, &
+                                                     0.03_dp, 0.5_dp, 0.04_dp], [3, 3])
+      call fold_surface(coords(:, :21), faces)
+      coords(:, 22:) = slaves
+      pass%faces = faces
+      pass%slave_nodes = [22, 23, 24]
+      pass%band = band
+      call start_pass_state(pass)
+      call surface_patches(coords, pass%faces, 30.0_dp, pass%patches)
+      pass%smooth = .true.
+      call initial_anchors(coords, edge_tolerance, pass)
+      call check(error, pass%face(1) == 2 .and. pass%face(2) == 3 .and. any(pass%face(3) == [2, 3]), &
+                 'faces '//faces_text(pass%face))
+      if (allocated(error)) return
+      ! face 2 spans x in [-1, 0] (xi1 = 2 x + 1), y in [0, 1] (xi2 = 2 y - 1), flat with flat
+      ! neighbours kept: the facet closest point
+      call check(error, maxval(abs(pass%anchor_xi(:, 1) - [0.8_dp, 0.0_dp])) <= 1.0e-12_dp, &
+                 'anchor of slave 1: '//to_string(pass%anchor_xi(1, 1))//' '//to_string(pass%anchor_xi(2, 1)))
+      if (allocated(error)) return
+      ! face 3 meets the curve (nodal normals +x at the fold, 5 degrees down at its other end):
+      ! the offset of slave 2 from its anchor is along the smoothed normal there
+      allocate (zero(size(coords)), source=0.0_dp)
+      offset = slaves(:, 2) - face_position(coords(:, faces(:, 3)), pass%anchor_xi(:, 2))
+      normal = smooth_normal_at(face_nodal_normals(coords, zero, pass, 3), pass%anchor_xi(:, 2))
+      call check(error, norm2(offset - dot_product(offset, normal)*normal) <= 1.0e-12_dp .and. &
+                 abs(pass%anchor_xi(1, 2) + 0.8_dp) < 0.01_dp, 'anchor of slave 2: '// &
+                 to_string(pass%anchor_xi(1, 2))//' '//to_string(pass%anchor_xi(2, 2)))
+   end subroutine test_fold
 
    subroutine test_plane(error)
       type(error_t), allocatable, intent(out) :: error

@@ -13,7 +13,8 @@ module test_contact_tangent
                                   node_face_contact
    use frix_face_projection, only: face_position, face_normal, face_shape_functions
    use test_contact_fixtures, only: warped_face, make_parameters, check_face_tangent, check_plane_tangent, &
-                                    asymmetry, slave_below, grid_patch, slave_below_smoothed
+                                    asymmetry, slave_below, grid_patch, slave_below_smoothed, fold_surface
+   use frix_contact_patches, only: surface_patches_t, surface_patches, ring_nodes_of, patch_faces_of
    implicit none
    private
 
@@ -47,6 +48,7 @@ contains
                new_unittest('anchor on the neighbouring face: stick commits its projection', &
                             test_other_face_commit), &
                new_unittest('smoothed normals, inside, stick', test_smoothed_stick), &
+               new_unittest('feature angle 30: patch cut at a 90-degree fold, slip and stick', test_feature_angle), &
                new_unittest('smoothed normals, inside, slip', test_smoothed_slip), &
                new_unittest('smoothed normals, inside, frictionless', test_smoothed_frictionless), &
                new_unittest('smoothed normals, near an edge (xi = 0.95), slip', test_smoothed_edge_slip), &
@@ -216,6 +218,37 @@ contains
       call check(error, maxval(abs(tangent(:, 16:))) > 1.0e-3_dp*maxval(abs(tangent)), &
                  'the ring nodes should enter the tangent, max '//to_string(maxval(abs(tangent(:, 16:)))))
    end subroutine check_smoothed
+
+   !> Face 3 of fold_surface (the first face past the 90-degree fold, first row): with feature
+   !> angle 30 its patch leaves out the 2 faces across the fold, 4 of 6 faces kept; slave at
+   !> depth 0.01 along the smoothed normal, anchor far (slip) or near (stick): the tangent
+   !> must still match the central differences.
+   subroutine test_feature_angle(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(surface_patches_t) :: patches
+      real(dp) :: coords(3, 21), x_face(3, 4)
+      real(dp), allocatable :: x_ring(:, :), tangent(:, :)
+      integer :: faces(4, 12), k
+      integer, allocatable :: patch_faces(:, :)
+      real(dp), parameter :: xi(2, 2) = reshape([-0.7_dp, 0.3_dp, 0.4_dp, -0.2_dp], [2, 2])
+      real(dp), parameter :: anchor(2, 2) = reshape([-0.5_dp, 0.4_dp, 0.405_dp, -0.205_dp], [2, 2])
+      integer, parameter :: status(2) = [contact_slip, contact_stick]
+      call fold_surface(coords, faces)
+      call surface_patches(coords, faces, 30.0_dp, patches)
+      x_face = coords(:, faces(:, 3))
+      x_ring = coords(:, ring_nodes_of(patches, 3))
+      patch_faces = patch_faces_of(patches, 3)
+      call check(error, size(patch_faces, 2) == 4, 'face 3: 4 patch faces, got '//to_string(size(patch_faces, 2)))
+      if (allocated(error)) return
+      allocate (tangent(15 + size(x_ring), 15 + size(x_ring)))
+      do k = 1, 2
+         call check_face_tangent(error, make_parameters(mu), &
+                                 slave_below_smoothed(x_face, x_ring, patch_faces, xi(:, k), depth), x_face, area, &
+                                 anchor(:, k), .true., .false., status(k), tangent, x_ring=x_ring, &
+                                 patch_faces=patch_faces)
+         if (allocated(error)) return
+      end do
+   end subroutine test_feature_angle
 
    subroutine test_smoothed_stick(error)
       type(error_t), allocatable, intent(out) :: error

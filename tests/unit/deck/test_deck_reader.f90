@@ -48,7 +48,8 @@ contains
                new_unittest('number_parsing', test_numbers), &
                new_unittest('valid_deck', test_valid_deck), &
                new_unittest('box_surfaces', test_box_surfaces), &
-               new_unittest('all_errors_reported', test_all_errors)]
+               new_unittest('all_errors_reported', test_all_errors), &
+               new_unittest('contact_normals_default_auto', test_contact_normals)]
    end subroutine collect_deck_reader
 
    subroutine write_text(path, text)
@@ -192,6 +193,45 @@ contains
       if (allocated(error)) return
       call check_message_contains(error, deck_error, '3 error(s) in the deck')
    end subroutine test_all_errors
+
+   !> NORMALS of five pairs: none (Auto, 30 degrees), FEATURE_ANGLE 45 (Auto), Smoothed (180),
+   !> Facet, and a rigid plane without NORMALS (its plane normal, no smoothing).
+   subroutine test_contact_normals(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(error_t), allocatable :: deck_error
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: pair = 'PAIR 1 SLAVE bar_zmin MASTER base_zmax EPSN 1e6'
+      logical, parameter :: smoothed(5) = [.true., .true., .true., .false., .false.]
+      real(dp), parameter :: angle(3) = [30.0_dp, 45.0_dp, 180.0_dp]
+      integer :: k
+      text = replace(valid_deck, 'DIVISIONS 2 1 1'//nl, 'DIVISIONS 2 1 1'//nl// &
+                     'BLOCK base ORIGIN 0 0 -1 SIZE 2 1 1 DIVISIONS 2 1 1'//nl)
+      text = replace(text, 'EAS 9'//nl, 'EAS 9'//nl//'SET base SOLID HEX8 MAT 3'//nl)
+      text = replace(text, '---------------STEPS', '---------------CONTACT CONDITIONS'//nl//pair//nl// &
+                     replace(pair, '1', '2')//' FEATURE_ANGLE 45'//nl//replace(pair, '1', '3')//' NORMALS Smoothed'//nl// &
+                     replace(pair, '1', '4')//' NORMALS Facet'//nl// &
+                     'PAIR 5 SLAVE bar_zmin MASTER RIGID_PLANE POINT 0 0 -5 NORMAL 0 0 1 EPSN 1e6'//nl// &
+                     '---------------STEPS')
+      call write_text('test_deck_normals.dck', text)
+      call read_deck('test_deck_normals.dck', model, deck_error)
+      if (allocated(deck_error)) then
+         call move_alloc(deck_error, error)
+         return
+      end if
+      call check(error, size(model%contact_pairs) == 5, 'five pairs')
+      if (allocated(error)) return
+      do k = 1, 5
+         call check(error, model%contact_pairs(k)%parameters%smoothed_normals .eqv. smoothed(k), &
+                    'pair '//achar(48 + k)//': smoothed normals')
+         if (allocated(error)) return
+      end do
+      do k = 1, 3
+         call check_close(error, model%contact_pairs(k)%parameters%feature_angle, angle(k), 0.0_dp, 0.0_dp, &
+                          'pair '//achar(48 + k)//': feature angle')
+         if (allocated(error)) return
+      end do
+   end subroutine test_contact_normals
 
    pure function replace(text, old, new) result(replaced)
       character(len=*), intent(in) :: text, old, new
