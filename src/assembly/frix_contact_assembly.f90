@@ -28,7 +28,9 @@ module frix_contact_assembly
    use frix_face_projection, only: face_normal, face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
                                   contact_open, contact_slip
-   use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of, surface_faces
+   use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of, surface_faces, &
+                                   surface_is_curved, all_faces_angle
+   use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_pass, only: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, &
                                 start_pass_state, kernel_nodes
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
@@ -97,9 +99,9 @@ contains
                cycle
             end if
             if (.not. pair%parameters%friction%frictionless()) system%frictional = .true.
-            if (system%frictional .or. pair%parameters%smoothed_normals) system%unsymmetric = .true.
          end associate
       end do
+      system%unsymmetric = system%frictional .or. any(system%passes%smooth)
       if (system%tied) call setup_tie_pattern(model, system, error)
    end subroutine setup_contact
 
@@ -118,6 +120,17 @@ contains
          call add_extra_pair(system, pairs(1, k), pairs(2, k))
       end do
    end subroutine setup_tie_pattern
+
+   !> Whether a pass's master surface gets smoothed normals: NORMALS Smoothed always, NORMALS
+   !> Auto where the surface is curved (frix_contact_patches' surface_is_curved).
+   logical function smoothed_master(coords, faces, parameters) result(smoothed)
+      real(dp), intent(in) :: coords(:, :)
+      integer, intent(in) :: faces(:, :)
+      type(contact_parameters_t), intent(in) :: parameters
+      smoothed = parameters%smoothed_normals
+      if (smoothed .and. parameters%feature_angle < all_faces_angle) &
+         smoothed = surface_is_curved(coords, faces, parameters%feature_angle)
+   end function smoothed_master
 
    !> The two passes first and second of a PASSES 2 pair know each other and where the mesh's
    !> nodes are among their slave nodes (for the interface force, interface_traction).
@@ -159,7 +172,7 @@ contains
             allocate (pass%faces(4, 0))
          else
             call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
-            if (contact_pair%parameters%smoothed_normals) then
+            if (smoothed_master(model%mesh%coords, pass%faces, contact_pair%parameters)) then
                call surface_patches(model%mesh%coords, pass%faces, contact_pair%parameters%feature_angle, &
                                     pass%patches)
                pass%smooth = .true.

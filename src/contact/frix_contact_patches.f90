@@ -21,11 +21,14 @@ module frix_contact_patches
    private
 
    public :: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, check_patch_rings
-   public :: ring_nodes_of, patch_faces_of, all_faces_angle
+   public :: ring_nodes_of, patch_faces_of, all_faces_angle, surface_is_curved
 
    !> A feature angle (degrees) at or above which every face sharing a node is in the patch
    !> (NORMALS Smoothed), without computing an angle: bit-for-bit the unfiltered patches.
    real(dp), parameter :: all_faces_angle = 180.0_dp
+   !> Faces whose normals differ by less than this (radians) count as coplanar
+   !> (surface_is_curved): 1e-6, far above the round-off of a flat mesh's normals.
+   real(dp), parameter :: flat_angle = 1.0e-6_dp
 
    !> The patch of every face of a surface, compressed rows over the faces:
    !> ring_nodes(ring_start(f) + 1 : ring_start(f + 1)) are the mesh numbers of face f's ring
@@ -79,6 +82,32 @@ contains
          call append_patch(patches, f, ring, local)
       end do
    end subroutine surface_patches
+
+   !> Whether two faces of the surface that share a node meet at an angle above flat_angle and
+   !> at most the feature angle (degrees), in the reference configuration: a curved surface,
+   !> which NORMALS Auto smooths; a flat one (or one whose edges are all sharper than the
+   !> feature angle) keeps the facet normals, exact for it and giving a symmetric tangent.
+   pure logical function surface_is_curved(coords, faces, feature_angle) result(curved)
+      real(dp), intent(in) :: coords(:, :)    !! reference coordinates (3, n_nodes)
+      integer, intent(in) :: faces(:, :)      !! (4, n_faces)
+      real(dp), intent(in) :: feature_angle   !! degrees
+      integer, allocatable :: node_start(:), node_faces(:), adjacent(:)
+      real(dp), allocatable :: centre_normal(:, :)
+      integer :: f
+      call faces_around_nodes(size(coords, 2), faces, node_start, node_faces)
+      allocate (centre_normal(3, size(faces, 2)))
+      do f = 1, size(faces, 2)
+         centre_normal(:, f) = face_normal(coords(:, faces(:, f)), [0.0_dp, 0.0_dp])
+      end do
+      curved = .false.
+      do f = 1, size(faces, 2)
+         adjacent = adjacent_faces(faces, f, node_start, node_faces)
+         curved = any(within_feature_angle(centre_normal(:, f), centre_normal(:, adjacent), feature_angle) .and. &
+                      .not. within_feature_angle(centre_normal(:, f), centre_normal(:, adjacent), &
+                                                 flat_angle*180.0_dp/acos(-1.0_dp)))
+         if (curved) return
+      end do
+   end function surface_is_curved
 
    !> Whether each unit normal normals(:, k) makes an angle of at most feature_angle (degrees)
    !> with the unit normal `own`: acos(own . n) <= feature_angle (the cosine clamped to [-1, 1]).
@@ -237,6 +266,9 @@ contains
       face_nodes = 0
       if (size(surface%elements) == 0) return
       faces = surface_faces(mesh, surface)
+      if (feature_angle < all_faces_angle) then
+         if (.not. surface_is_curved(mesh%coords, faces, feature_angle)) return   ! facet normals
+      end if
       call surface_patches(mesh%coords, faces, feature_angle, patches)
       f = largest_ring_face(patches)
       n_ring = patches%ring_start(f + 1) - patches%ring_start(f)

@@ -43,10 +43,8 @@ add_test(NAME contact_s3_coarse_mu0.1_path
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.1_path.dck --path-limit 0.7917)
 set_tests_properties(contact_s3_coarse_mu0.1_path PROPERTIES LABELS "regression;contact;slow" TIMEOUT 3600)
 
-# Reduced penalties (EPSN 1e6, EPST 1e4), coarse mesh, default normals (Auto): regression
-# against the stored frix value of each mu and the mu-independence of the displacement. With
-# Auto mu 0.1 and 0.25 reach t = 1 too, but mu 0.1 differs from mu 0.5 by 0.64 % (> 0.5 %):
-# both stay disabled (docs/verification/s3.md).
+# Reduced penalties (EPSN 1e6, EPST 1e4), coarse mesh: regression against the stored frix
+# value of each mu and the mu-independence of the displacement.
 foreach(mu 0.5 0.1 0.25)
   add_test(NAME contact_s3_coarse_mu${mu}_epsn1e6
            COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu${mu}_epsn1e6.dck 1101 ${mu}
