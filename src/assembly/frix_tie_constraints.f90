@@ -207,6 +207,16 @@ contains
       logical, intent(in) :: dependent(:)
       type(sparse_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
+      call move_dependent(passes, dependent, matrix, .true., error)
+      if (.not. allocated(error)) call move_dependent(passes, dependent, matrix, .false., error)
+   end subroutine condense_matrix
+
+   !> The rows (`rows`) or the columns of every dependent equation moved onto its masters'.
+   subroutine move_dependent(passes, dependent, matrix, rows, error)
+      type(contact_pass_t), intent(in) :: passes(:)
+      logical, intent(in) :: dependent(:), rows
+      type(sparse_matrix_t), intent(inout) :: matrix
+      type(error_t), allocatable, intent(inout) :: error
       integer :: p, i, s, c
       do p = 1, size(passes)
          if (.not. passes(p)%tied) cycle
@@ -214,25 +224,17 @@ contains
             if (passes(p)%face(i) == 0) cycle
             s = passes(p)%slave_nodes(i)
             do c = 1, 3
-               if (dependent(3*s - 3 + c)) call move_row(matrix, s, c, tie_masters(passes(p), i), &
-                                                         tie_weights(passes(p), i), error)
+               if (.not. dependent(3*s - 3 + c)) cycle
+               if (rows) then
+                  call move_row(matrix, s, c, tie_masters(passes(p), i), tie_weights(passes(p), i), error)
+               else
+                  call move_column(matrix, s, c, tie_masters(passes(p), i), tie_weights(passes(p), i), error)
+               end if
                if (allocated(error)) return
             end do
          end do
       end do
-      do p = 1, size(passes)
-         if (.not. passes(p)%tied) cycle
-         do i = 1, size(passes(p)%slave_nodes)
-            if (passes(p)%face(i) == 0) cycle
-            s = passes(p)%slave_nodes(i)
-            do c = 1, 3
-               if (dependent(3*s - 3 + c)) call move_column(matrix, s, c, tie_masters(passes(p), i), &
-                                                            tie_weights(passes(p), i), error)
-               if (allocated(error)) return
-            end do
-         end do
-      end do
-   end subroutine condense_matrix
+   end subroutine move_dependent
 
    !> Row (s, c) times w_a added to rows (a, c), then zeroed. The columns holding row s are
    !> those of s's neighbours n (the pattern is structurally symmetric).
