@@ -142,3 +142,6 @@ include(${PROJECT_SOURCE_DIR}/bench/p2/p2_tests.cmake)
 add_test(NAME restart_contact COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_contact_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1.dck)
 set_tests_properties(restart_contact PROPERTIES LABELS "regression;contact")
+add_test(NAME restart_contact_augmented COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_contact_test.sh
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1_augmented.dck)
+set_tests_properties(restart_contact_augmented PROPERTIES LABELS "regression;contact")

@@ -64,3 +64,11 @@ write v5_u3_1pass_coulomb    3 upper_zmin lower_zmax 1 "$co" "Coulomb MU 0.3, EP
 write v5_u4_matching_1pass   4 upper_zmin lower_zmax 1 "$fl" "Control: MATCHING meshes (4 x 4 on 4 x 4), frictionless, one pass: must pass exactly."
 sed "s/EPSN 1e8 (penetration p\/EPSN = 1e-6/EPSN 1e10 (penetration p\/EPSN = 1e-8/; s/EPSN 1.0e8 GAPTOL/EPSN 1.0e10 GAPTOL/" v5_u3_2pass.dck > v5_u3_2pass_eps1e10.dck
 sed "s/EPSN 1e8 (penetration p\/EPSN = 1e-6/EPSN 1e10 (penetration p\/EPSN = 1e-8/; s/EPSN 1.0e8 GAPTOL/EPSN 1.0e10 GAPTOL/" v5_u3_2pass_coulomb.dck > v5_u3_2pass_coulomb_eps1e10.dck
+# Augmented Lagrangian (METHOD Augmented): the multipliers are augmented until every
+# penetration is below PENTOL, so the result no longer depends on EPSN (docs/contact.md).
+augmented() {  # source target epsn pentol
+  sed "s/EPSN 1e8 (penetration p\/EPSN = 1e-6/METHOD Augmented, EPSN $3, PENTOL $4 (penetration at most $4/; s/EPSN 1.0e8 GAPTOL/METHOD Augmented EPSN $3 PENTOL $4 GAPTOL/" "$1.dck" > "$2.dck"
+}
+augmented v5_u3_2pass v5_u3_2pass_augmented 1.0e8 1.0e-11
+augmented v5_u3_2pass v5_u3_2pass_augmented_eps1e7 1.0e7 1.0e-11
+augmented v5_u3_slave_upper_1pass v5_u3_slave_upper_1pass_augmented 1.0e8 1.0e-11

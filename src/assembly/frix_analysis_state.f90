@@ -11,6 +11,7 @@ module frix_analysis_state
    use frix_error, only: error_t
    use frix_model, only: model_t
    use frix_contact_assembly, only: contact_system_t, setup_contact, commit_contact
+   use frix_contact_augmentation, only: restore_multipliers
    implicit none
    private
 
@@ -80,12 +81,13 @@ contains
 
    !> Go back to the last converged increment (after a failed increment). The contact
    !> system's committed part is untouched by the iterations (each search and assembly starts
-   !> from it), so it has nothing to restore.
+   !> from it); only the multipliers that augmentations changed go back.
    subroutine restore_state(state)
       type(analysis_state_t), intent(inout) :: state
       state%time = state%committed_time
       state%u = state%committed_u
       state%alpha = state%committed_alpha
       state%history = state%committed_history
+      if (state%has_contact) call restore_multipliers(state%contact)
    end subroutine restore_state
 end module frix_analysis_state

@@ -438,11 +438,12 @@ contains
       end do
    end subroutine add_touching_stiffness
 
-   !> Accept the current contact state as converged: anchors and accumulated slip.
+   !> Accept the current contact state as converged: anchors, accumulated slip, multipliers.
    subroutine commit_contact(system)
       type(contact_system_t), intent(inout) :: system
       integer :: p, i
       do p = 1, size(system%passes)
+         system%passes(p)%committed_multiplier = system%passes(p)%multiplier
          if (system%passes(p)%tied) cycle   ! a tie's foot points never change
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)

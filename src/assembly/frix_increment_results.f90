@@ -23,6 +23,8 @@ module frix_increment_results
       integer, allocatable :: nodes(:)       !! internal node numbers of the slave nodes
       real(dp), allocatable :: values(:, :)  !! (10, n_slave_nodes)
       real(dp), allocatable :: history(:, :) !! the pass's slip history, as restart reads it
+      !> the multipliers of an augmented pass (force/area; restart data), unallocated otherwise
+      real(dp), allocatable :: multiplier(:)
    end type contact_pass_results_t
 
    type :: increment_results_t

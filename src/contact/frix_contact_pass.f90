@@ -40,6 +40,7 @@ module frix_contact_pass
       real(dp), allocatable :: interface_force(:, :)
       integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
+      real(dp) :: face_size = 0.0_dp           !! mean size of the master faces (reference, length)
       !> smoothed normals (NORMALS Smoothed or Auto): the patch of every master face (within the
       !> pair's feature angle)
       logical :: smooth = .false.
@@ -60,8 +61,9 @@ module frix_contact_pass
       logical, allocatable :: has_anchor(:)
       real(dp), allocatable :: slip(:)             !! accumulated slip (length)
       !> Lagrange multiplier lambda of each slave node for the normal contact law (force/area,
-      !> an estimate of p_N); 0 and unused by the penalty law, not in restart files
-      real(dp), allocatable :: multiplier(:)
+      !> an estimate of p_N; 0 and unused by the penalty law): the current one, changed only
+      !> by augmentations (frix_contact_augmentation), and the last converged increment's
+      real(dp), allocatable :: multiplier(:), committed_multiplier(:)
    end type contact_pass_t
 
 contains
@@ -114,7 +116,8 @@ contains
          size_sum = size_sum + 0.5_dp*(norm2(coords(:, 3) - coords(:, 1)) + &
                                        norm2(coords(:, 4) - coords(:, 2)))/sqrt(2.0_dp)
       end do
-      pass%band = 0.5_dp*size_sum/max(1, size(surface%elements))
+      pass%face_size = size_sum/max(1, size(surface%elements))
+      pass%band = 0.5_dp*pass%face_size
    end subroutine set_master_faces
 
    !> The per-node state of a pass whose slave nodes are set: no face, the law's branches, no
@@ -129,7 +132,7 @@ contains
       allocate (pass%slip_direction(3, n_slave), source=0.0_dp)
       allocate (pass%result(n_slave))
       allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
-                pass%multiplier(n_slave), source=0.0_dp)
+                pass%multiplier(n_slave), pass%committed_multiplier(n_slave), source=0.0_dp)
       allocate (pass%has_anchor(n_slave), source=.false.)
    end subroutine start_pass_state
 

@@ -15,7 +15,17 @@ module frix_normal_contact_law
    implicit none
    private
 
-   public :: normal_contact_law_t
+   public :: normal_contact_law_t, augmentation_t
+
+   !> How a law's multipliers are augmented between Newton solutions (frix_augmentation):
+   !> `augmented` false for a law that does not use them (the penalty law).
+   type :: augmentation_t
+      logical :: augmented = .false.
+      !> largest penetration accepted (length); < 0: the default, a fraction of the master's
+      !> face size (frix_contact_augmentation)
+      real(dp) :: penetration_tolerance = -1.0_dp
+      integer :: max_augmentations = 0   !! Newton solutions after the first, at most
+   end type augmentation_t
 
    type, abstract :: normal_contact_law_t
       character(len=:), allocatable :: name   !! deck keyword of the law (METHOD), e.g. PENALTY
@@ -28,6 +38,8 @@ module frix_normal_contact_law
       !> d p_N / d(-g) in contact (force/area/length): the normal stiffness per unit area that
       !> the assembly gives touching nodes (0 <= g <= GAPTOL) in the predictor.
       procedure(stiffness_interface), deferred :: stiffness
+      !> Whether and how the multipliers are augmented (default: not).
+      procedure :: augmentation
    end type normal_contact_law_t
 
    abstract interface
@@ -51,4 +63,13 @@ module frix_normal_contact_law
          class(normal_contact_law_t), intent(in) :: self
       end function stiffness_interface
    end interface
+
+contains
+
+   !> A law that ignores its multipliers: no augmentation.
+   pure function augmentation(self) result(settings)
+      class(normal_contact_law_t), intent(in) :: self
+      type(augmentation_t) :: settings
+      settings = augmentation_t()
+   end function augmentation
 end module frix_normal_contact_law

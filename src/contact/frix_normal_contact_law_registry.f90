@@ -5,12 +5,15 @@
 !> properties are frix_contact_law_table's):
 !>   PENALTY   p_N = eps_N max(0, -g), property EPSN (required, > 0); the default of a pair
 !>             without METHOD
+!>   AUGMENTED p_N = max(0, lambda + eps_N (-g)) with Uzawa augmentations of lambda, properties
+!>             EPSN, PENTOL, MAXAUG (frix_augmented_normal_law)
 module frix_normal_contact_law_registry
    use frix_error, only: error_t
    use frix_property_list, only: property_list_t, property_spec_t
    use frix_contact_law_table, only: law_entry_t, table_property_specs, find_law
    use frix_normal_contact_law, only: normal_contact_law_t
    use frix_penalty_normal_law, only: penalty_from_properties, penalty_properties
+   use frix_augmented_normal_law, only: augmented_from_properties, augmented_properties
    implicit none
    private
 
@@ -35,7 +38,8 @@ contains
    !> The registered laws, one line per law; the first is the default.
    function normal_table() result(table)
       type(normal_entry_t), allocatable :: table(:)
-      table = [normal_entry_t('PENALTY', penalty_properties, penalty_from_properties)]
+      table = [normal_entry_t('PENALTY', penalty_properties, penalty_from_properties), &
+               normal_entry_t('AUGMENTED', augmented_properties, augmented_from_properties)]
    end function normal_table
 
    !> The METHOD of a contact pair that names none.

@@ -22,7 +22,8 @@ module frix_driver
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
                                   restore_state
-   use frix_newton_solver, only: newton_context_t, path_constraint_t, setup_newton, solve_increment
+   use frix_newton_solver, only: newton_context_t, path_constraint_t, setup_newton
+   use frix_augmentation, only: solve_augmented
    use frix_newton_report, only: newton_report_t
    use frix_equation_checks, only: equation_label
    use frix_results_output, only: results_output_t
@@ -167,6 +168,8 @@ contains
       if (has_contact) write (*, '(a,t40,i12)') 'frix: stat stick_releases', context%n_releases
       if (has_contact) write (*, '(a,t40,i12)') 'frix: stat friction_continuations', &
          context%n_continuations
+      if (context%n_augmentations > 0) write (*, '(a,t40,i12)') 'frix: stat augmentations', &
+         context%n_augmentations
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
       analyse = 0.0_dp
@@ -378,7 +381,8 @@ contains
          time_text(control%size_now)
    end subroutine cut_back
 
-   !> Solve one increment (solve_increment's arguments), with the friction continuation of
+   !> Solve one increment (solve_increment's arguments, with the augmentations of augmented
+   !> Lagrangian contact, frix_augmentation), with the friction continuation of
    !> MU_CONTINUATION f_1 > ... > f_m > 1 if that fails on a model with frictional contact: a
    !> homotopy in the friction coefficient within the increment. From the committed state, the
    !> increment is solved with every friction law seeing the pressure f_k p_N (Coulomb: the
@@ -403,11 +407,10 @@ contains
       type(path_constraint_t), intent(in), optional :: path
       real(dp), allocatable :: factors(:)
       real(dp) :: stage_time
-      integer :: k
+      integer :: k, stage_iterations
       character(len=16) :: factor_text
 
-      call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
-      iterations = report%iterations
+      call solve_augmented(model, context, state, time, max_iterations, label, report, iterations, error, path)
       if (allocated(error) .or. report%converged .or. report%interrupted) return
       if (.not. allocated(model%controls%friction_continuation)) return
       if (.not. (state%has_contact .and. state%contact%frictional)) return
@@ -419,8 +422,9 @@ contains
          state%contact%friction_scale = factors(k)
          write (factor_text, '(f0.3)') factors(k)
          if (.not. context%quiet) write (*, '(2x,a)') 'friction continuation: mu x '//trim(factor_text)
-         call solve_increment(model, context, state, stage_time, max_iterations, label, report, error, path)
-         iterations = iterations + report%iterations
+         call solve_augmented(model, context, state, stage_time, max_iterations, label, report, stage_iterations, &
+                              error, path)
+         iterations = iterations + stage_iterations
          if (allocated(error) .or. report%interrupted) exit
          if (.not. report%converged) then
             if (allocated(report%failure)) report%failure = report%failure// &

@@ -76,6 +76,7 @@ module frix_newton_solver
       integer :: n_line_search_trials = 0      !! shortened steps tried by the contact line search
       integer :: n_releases = 0                !! converged iterates where held nodes were released
       integer :: n_continuations = 0           !! failed increments retried by friction continuation
+      integer :: n_augmentations = 0           !! multiplier updates of augmented contact (frix_augmentation)
    end type newton_context_t
 
    real(dp), parameter :: zero_residual_fraction = 1.0e-4_dp

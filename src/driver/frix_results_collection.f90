@@ -17,6 +17,7 @@ module frix_results_collection
    use frix_assembler, only: assemble_internal
    use frix_material, only: history_name_length
    use frix_increment_results, only: increment_results_t, named_field_t, contact_pass_results_t
+   use frix_normal_contact_law, only: augmentation_t
    use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, &
                                     get_contact_history
    implicit none
@@ -145,6 +146,17 @@ contains
    end subroutine collect_history_fields
 
    !> The contact tables of every pass, the slip histories and the per-node contact fields.
+   !> Whether contact pair `pair` has an augmented normal law (its multipliers are results).
+   logical function augmented_pass(model, pair) result(augmented)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: pair
+      type(augmentation_t) :: settings
+      augmented = .false.
+      if (model%contact_pairs(pair)%tied) return
+      settings = model%contact_pairs(pair)%parameters%normal%augmentation()
+      augmented = settings%augmented
+   end function augmented_pass
+
    subroutine collect_contact(model, state, results, error)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(in) :: state
@@ -157,6 +169,7 @@ contains
             call contact_pass_table(state%contact, p, pair, table%nodes, table%values)
             table%pair_id = model%contact_pairs(pair)%id
             call get_contact_history(state%contact, p, table%history)
+            if (augmented_pass(model, pair)) table%multiplier = state%contact%passes(p)%committed_multiplier
             call check_contact_finite(model, results, table, error)
             if (allocated(error)) return
          end associate

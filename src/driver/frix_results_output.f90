@@ -211,6 +211,8 @@ contains
          call self%hdf5%add_contact_array('normal', results%contact_normal)
          do p = 1, size(results%contact)
             call self%hdf5%add_contact_array('pass'//to_string(p)//'_history', results%contact(p)%history)
+            if (allocated(results%contact(p)%multiplier)) &
+               call self%hdf5%add_contact_array('pass'//to_string(p)//'_multiplier', results%contact(p)%multiplier)
          end do
       end if
       do f = 1, size(results%point_fields)

@@ -1,6 +1,7 @@
 !> The analysis state from the HDF5 file of an earlier run (docs/hdf5-layout.md, "Restart"):
 !> the committed displacements, EAS parameters and material history of one converged
-!> increment, and the committed slip history of every contact pass (`contact/pass<p>_history`).
+!> increment, and the committed slip history of every contact pass (`contact/pass<p>_history`)
+!> with the multipliers of augmented passes (`contact/pass<p>_multiplier`).
 !> What is read here is what frix_results_collection puts into every increment's results.
 module frix_state_restart
    use frix_kinds, only: dp
@@ -10,6 +11,7 @@ module frix_state_restart
    use frix_analysis_state, only: analysis_state_t, commit_solution
    use frix_hdf5_results, only: read_restart, read_increment_array
    use frix_contact_assembly, only: get_contact_history, set_contact_history
+   use frix_normal_contact_law, only: augmentation_t
    implicit none
    private
 
@@ -27,6 +29,7 @@ contains
       real(dp), intent(out) :: time
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: values(:, :)
+      type(augmentation_t) :: settings
       integer :: p
       time = 0.0_dp
       call read_restart(path, step, increment, time, state%u, state%alpha, state%history, error, model%mesh)
@@ -42,6 +45,20 @@ contains
             return
          end if
          call set_contact_history(state%contact, p, values)
+         associate (pass => state%contact%passes(p))
+            if (model%contact_pairs(pass%pair)%tied) cycle
+            settings = model%contact_pairs(pass%pair)%parameters%normal%augmentation()
+            if (.not. settings%augmented) cycle
+            values = reshape(pass%multiplier, [1, size(pass%multiplier)])
+            call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_multiplier', values, &
+                                      error)
+            if (allocated(error)) then
+               error%message = 'contact pass '//to_string(p)//': '//error%message
+               return
+            end if
+            pass%multiplier = values(1, :)
+            pass%committed_multiplier = values(1, :)
+         end associate
       end do
    end subroutine read_state_restart
 end module frix_state_restart

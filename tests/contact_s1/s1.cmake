@@ -9,8 +9,11 @@ add_test(NAME contact_s1_analytical COMMAND /usr/bin/python3 ${s1_tests}/test_s1
 
 # The variants: (a) rigid plane, (b) deformable base, (c) x = 0 fully held (step-2 gains),
 # (d) refined 60 x 1 x 2; (b) refined too.
+# The deformable base with augmented Lagrangian normal contact (EPSN 1e5 and 1e4, EPST = k_s
+# kept): the same checks (docs/verification/penalty.md).
 foreach(case "rigid_plane;rigid" "deformable_base;base" "fixed_end;fixed" "refined;refined"
-             "deformable_base_refined;base_refined")
+             "deformable_base_refined;base_refined" "deformable_base_augmented;base"
+             "deformable_base_augmented_eps1e4;base")
   list(GET case 0 deck)
   list(GET case 1 variant)
   add_test(NAME contact_s1_${deck}

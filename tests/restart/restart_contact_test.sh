@@ -1,22 +1,26 @@
 #!/usr/bin/env bash
-# Restart with frictional contact: restart_s1.dck run through, then restarted from increment
-# 2.3 (2 slipping nodes, stick elsewhere). The slip anchors and accumulated slip come back from
+# Restart with frictional contact: DECK (restart_s1.dck, restart_s1_augmented.dck) run through,
+# then restarted from increment 2.3 (2 slipping nodes, stick elsewhere). The slip anchors and accumulated slip come back from
 # the HDF5 file's contact group, so the restarted run must end at the uninterrupted one's state
 # to 1e-10 relative: displacements, contact tractions and accumulated slip (without the slip
-# history the restarted run would start from reference anchors with zero slip and differ).
+# history the restarted run would start from reference anchors with zero slip and differ; with
+# METHOD Augmented also the multipliers, contact/pass1_multiplier).
 set -eu
 frix=$1; deck=$2
+name=$(basename "$deck" .dck)
 out=$(mktemp -d); trap 'rm -rf "$out"' EXIT
 "$frix" "$deck" --out "$out/full" --quiet
-"$frix" "$deck" --out "$out/restarted" --quiet --restart "$out/full/restart_s1.h5" --from 2.3
-/usr/bin/python3 - "$out" <<'PY'
+"$frix" "$deck" --out "$out/restarted" --quiet --restart "$out/full/$name.h5" --from 2.3
+/usr/bin/python3 - "$out" "$name" <<'PY'
 import sys, h5py, numpy as np
-out = sys.argv[1]
+out, name = sys.argv[1], sys.argv[2]
 def last(path):
     with h5py.File(path, 'r') as f:
         g = f['increments'][sorted(f['increments'])[-1]]
-        return {k: g[k][...] for k in ('displacement', 'contact/traction', 'contact/slip', 'contact/pressure')}
-ref, got = last(f"{out}/full/restart_s1.h5"), last(f"{out}/restarted/restart_s1.h5")
+        keys = ['displacement', 'contact/traction', 'contact/slip', 'contact/pressure']
+        keys += [k for k in ('contact/pass1_multiplier',) if k in g]
+        return {k: g[k][...] for k in keys}
+ref, got = last(f"{out}/full/{name}.h5"), last(f"{out}/restarted/{name}.h5")
 fail = 0
 for k in ref:
     scale = np.max(np.abs(ref[k]))

@@ -5,6 +5,7 @@ program test_contact
    use test_face_projection, only: collect_face_projection
    use test_friction_law_registry, only: collect_friction_law_registry
    use test_normal_contact_law, only: collect_normal_contact_law
+   use test_augmented_normal_law, only: collect_augmented_normal_law
    use test_contact_tangent, only: collect_contact_tangent
    use test_contact_physics, only: collect_contact_physics
    use test_contact_patches, only: collect_contact_patches
@@ -14,6 +15,7 @@ program test_contact
                     new_testsuite('face_projection', collect_face_projection), &
                     new_testsuite('friction_law_registry', collect_friction_law_registry), &
                     new_testsuite('normal_contact_law', collect_normal_contact_law), &
+                    new_testsuite('augmented_normal_law', collect_augmented_normal_law), &
                     new_testsuite('contact_tangent', collect_contact_tangent), &
                     new_testsuite('contact_physics', collect_contact_physics), &
                     new_testsuite('contact_patches', collect_contact_patches), &

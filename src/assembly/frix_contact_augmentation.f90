@@ -1,0 +1,124 @@
+!> The multipliers of augmented Lagrangian contact (METHOD Augmented,
+!> frix_augmented_normal_law) in the global system: after a converged Newton solution of an
+!> increment, the largest penetration of every augmented pass against its tolerance, and
+!> Uzawa's update lambda <- p_N = max(0, lambda + eps_N (-g)) of every slave node (Simo &
+!> Laursen, Comput. Struct. 42 (1992) 97-116); the driver then solves the increment again
+!> (frix_augmentation). The multipliers are committed with the contact state
+!> (frix_contact_assembly's commit_contact) and go back to the committed ones when an
+!> increment is given up (restore_multipliers).
+module frix_contact_augmentation
+   use frix_kinds, only: dp
+   use frix_model, only: model_t
+   use frix_normal_contact_law, only: augmentation_t
+   use frix_contact_kernel, only: contact_open
+   use frix_contact_assembly, only: contact_system_t
+   implicit none
+   private
+
+   public :: penetration_check_t, check_penetrations, augment_multipliers, restore_multipliers
+   public :: max_augmentations, default_tolerance_fraction
+
+   !> Default penetration tolerance: this fraction of the master's mean face size (S1: with
+   !> 1e-3 the step-2 pressure changes stay below eps_N times the tolerance and the result
+   !> keeps the penalty's dependence on EPSN, 4 % over 1e4 ... 1e7; with 1e-5 0.01 %).
+   real(dp), parameter :: default_tolerance_fraction = 1.0e-5_dp
+
+   !> The worst penetration relative to its tolerance over the augmented passes.
+   type :: penetration_check_t
+      logical :: within = .true.        !! every active node's penetration within its tolerance
+      real(dp) :: penetration = 0.0_dp  !! the largest ratio's penetration -g (length)
+      real(dp) :: tolerance = 0.0_dp    !! its pass's tolerance (length)
+      integer :: node = 0               !! its slave node (internal number), 0: none active
+      integer :: n_over = 0             !! active nodes beyond their tolerance
+   end type penetration_check_t
+
+contains
+
+   !> The augmentation settings of pass p's contact pair (none for a tie).
+   function pass_augmentation(model, system, p) result(settings)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(in) :: system
+      integer, intent(in) :: p
+      type(augmentation_t) :: settings
+      settings = augmentation_t()
+      associate (pair => model%contact_pairs(system%passes(p)%pair))
+         if (.not. pair%tied) settings = pair%parameters%normal%augmentation()
+      end associate
+   end function pass_augmentation
+
+   !> Most augmentations any pass allows (0: no augmented pass).
+   integer function max_augmentations(model, system)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(in) :: system
+      type(augmentation_t) :: settings
+      integer :: p
+      max_augmentations = 0
+      do p = 1, size(system%passes)
+         settings = pass_augmentation(model, system, p)
+         if (settings%augmented) max_augmentations = max(max_augmentations, settings%max_augmentations)
+      end do
+   end function max_augmentations
+
+   !> The penetrations of the active slave nodes of the augmented passes at the last
+   !> evaluation, against each pass's tolerance (given, or default_tolerance_fraction times
+   !> its master's mean face size).
+   function check_penetrations(model, system) result(check)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(in) :: system
+      type(penetration_check_t) :: check
+      type(augmentation_t) :: settings
+      real(dp) :: tolerance, worst
+      integer :: p, i
+      worst = 0.0_dp
+      do p = 1, size(system%passes)
+         settings = pass_augmentation(model, system, p)
+         if (.not. settings%augmented) cycle
+         associate (pass => system%passes(p))
+            tolerance = settings%penetration_tolerance
+            if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*pass%face_size
+            do i = 1, size(pass%slave_nodes)
+               if (pass%result(i)%status == contact_open) cycle
+               if (-pass%result(i)%gap <= tolerance) cycle
+               check%within = .false.
+               check%n_over = check%n_over + 1
+               if (-pass%result(i)%gap/tolerance <= worst) cycle
+               worst = -pass%result(i)%gap/tolerance
+               check%penetration = -pass%result(i)%gap
+               check%tolerance = tolerance
+               check%node = pass%slave_nodes(i)
+            end do
+         end associate
+      end do
+   end function check_penetrations
+
+   !> Uzawa's update of every augmented pass: lambda <- p_N of the last evaluation (0 for an
+   !> open node). Returns the largest change of a multiplier (force/area).
+   real(dp) function augment_multipliers(model, system) result(largest_change)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      type(augmentation_t) :: settings
+      real(dp) :: updated
+      integer :: p, i
+      largest_change = 0.0_dp
+      do p = 1, size(system%passes)
+         settings = pass_augmentation(model, system, p)
+         if (.not. settings%augmented) cycle
+         associate (pass => system%passes(p))
+            do i = 1, size(pass%slave_nodes)
+               updated = merge(pass%result(i)%pressure, 0.0_dp, pass%result(i)%status /= contact_open)
+               largest_change = max(largest_change, abs(updated - pass%multiplier(i)))
+               pass%multiplier(i) = updated
+            end do
+         end associate
+      end do
+   end function augment_multipliers
+
+   !> The multipliers of the last converged increment (after a failed attempt).
+   subroutine restore_multipliers(system)
+      type(contact_system_t), intent(inout) :: system
+      integer :: p
+      do p = 1, size(system%passes)
+         system%passes(p)%multiplier = system%passes(p)%committed_multiplier
+      end do
+   end subroutine restore_multipliers
+end module frix_contact_augmentation

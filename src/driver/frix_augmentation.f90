@@ -1,0 +1,87 @@
+!> Augmented Lagrangian contact in the increment loop (docs/contact.md, "Augmented
+!> Lagrangian"): an increment is solved by Newton with the multipliers held, then, while an
+!> augmented pass has an active slave node whose penetration exceeds its tolerance, the
+!> multipliers are updated by Uzawa's rule (frix_contact_augmentation) and the increment is
+!> solved again from where the last solution ended, at most MAXAUG times (the largest over
+!> the pairs). The Uzawa iteration is the nested one of Simo & Laursen (Comput. Struct. 42
+!> (1992) 97-116): each Newton solution is exact for its multipliers, and each update brings
+!> the penetration down by about the ratio of the interface's stiffness to eps_N. When the
+!> limit is reached with penetrations still beyond tolerance the increment is accepted with a
+!> warning (its equilibrium is converged; only the constraint is loose), as the progress
+!> lines say.
+module frix_augmentation
+   use frix_kinds, only: dp
+   use frix_error, only: error_t
+   use frix_strings, only: to_string
+   use frix_model, only: model_t
+   use frix_analysis_state, only: analysis_state_t
+   use frix_newton_solver, only: newton_context_t, path_constraint_t, solve_increment
+   use frix_newton_report, only: newton_report_t
+   use frix_contact_augmentation, only: penetration_check_t, check_penetrations, augment_multipliers, &
+                                        max_augmentations
+   implicit none
+   private
+
+   public :: solve_augmented
+
+contains
+
+   !> solve_increment, followed by the augmentations of augmented contact pairs (module
+   !> head). `report` is the last solution's; `iterations` counts the Newton iterations of all.
+   subroutine solve_augmented(model, context, state, time, max_iterations, label, report, iterations, &
+                              error, path)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      integer, intent(in) :: max_iterations
+      character(len=*), intent(in) :: label
+      type(newton_report_t), intent(out) :: report
+      integer, intent(out) :: iterations
+      type(error_t), allocatable, intent(out) :: error
+      type(path_constraint_t), intent(in), optional :: path
+      type(penetration_check_t) :: check
+      real(dp) :: change, solve_time
+      integer :: k, limit
+      call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
+      iterations = report%iterations
+      if (allocated(error) .or. .not. report%converged .or. .not. state%has_contact) return
+      limit = max_augmentations(model, state%contact)
+      do k = 1, limit
+         check = check_penetrations(model, state%contact)
+         if (check%within) return
+         change = augment_multipliers(model, state%contact)
+         context%n_augmentations = context%n_augmentations + 1
+         call print_augmentation(context, model, k, check, change)
+         ! path following: the load factor found is kept as the start (solve_increment's `time`)
+         solve_time = state%time
+         call solve_increment(model, context, state, solve_time, max_iterations, label//'  aug'//to_string(k), &
+                              report, error, path)
+         iterations = iterations + report%iterations
+         if (allocated(error) .or. .not. report%converged) then
+            if (allocated(report%failure)) report%failure = report%failure//' in augmentation '//to_string(k)
+            return
+         end if
+      end do
+      check = check_penetrations(model, state%contact)
+      if (.not. check%within .and. .not. context%quiet) &
+         write (*, '(2x,a)') 'augmentation limit ('//to_string(limit)//') reached: '// &
+            to_string(check%n_over)//' nodes beyond the penetration tolerance, largest '// &
+            to_string(check%penetration)//' (tolerance '//to_string(check%tolerance)//') at node '// &
+            to_string(model%mesh%node_ids(check%node))//'; the increment is accepted'
+   end subroutine solve_augmented
+
+   !> The progress line of augmentation k.
+   subroutine print_augmentation(context, model, k, check, change)
+      type(newton_context_t), intent(in) :: context
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: k
+      type(penetration_check_t), intent(in) :: check
+      real(dp), intent(in) :: change
+      if (context%quiet) return
+      write (*, '(2x,a)') 'augmentation '//to_string(k)//': '//to_string(check%n_over)// &
+         ' nodes beyond the penetration tolerance, largest '//to_string(check%penetration)// &
+         ' (tolerance '//to_string(check%tolerance)//') at node '//to_string(model%mesh%node_ids(check%node))// &
+         '; largest multiplier change '//to_string(change)
+   end subroutine print_augmentation
+end module frix_augmentation
