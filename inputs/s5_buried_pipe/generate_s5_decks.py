@@ -38,6 +38,8 @@ def deck(name, title, mesh, element_eas, pair, load_surface, geometry, load, num
     eas_text = "HEX8 + EAS %d" % element_eas if element_eas else "plain HEX8 (locks: s5.md)"
     if pair.startswith("TIE"):
         contact_text = "TIE (bonded by elimination, dual mortar weights; no penalty)"
+    elif "METHOD" in pair:
+        contact_text = "METHOD " + pair.split("METHOD", 1)[1].strip()
     else:
         contact_text = "EPSN " + pair.split("EPSN", 1)[1].strip()
     text = HEADER.format(title=title, geometry=geometry, element=eas_text,
@@ -90,10 +92,13 @@ HISTORY SET soil_crown DOF 3 KIND U   // node 1, u_z
         handle.write(text)
 
 
-def pair(slave, master, mu, eps="1.0e4", normals="Facet", passes=1):
-    p = "PAIR 1 SLAVE %s MASTER %s EPSN %s" % (slave, master, eps)
+def pair(slave, master, mu, eps="1.0e4", normals="Facet", passes=1, method=None, epst=None):
+    p = "PAIR 1 SLAVE %s MASTER %s" % (slave, master)
+    if method:
+        p += " METHOD %s" % method
+    p += " EPSN %s" % eps
     if mu > 0:
-        p += " EPST %s MU %g" % (eps, mu)
+        p += " EPST %s MU %g" % (epst or eps, mu)
     p += " GAPTOL 1.0e-6 PASSES %d" % passes
     if normals:   # None: the default (NORMALS Auto)
         p += " NORMALS %s" % normals
@@ -195,6 +200,16 @@ def main():
              "Load: " + BLOCK.replace("p = 100 kPa", "p = 1 kPa"), numstep=1, pressure=1.0)
     deck("s5_block_tied", "Closed-form check, tied interface (no slip).", "s5_block.msh", 9, TIE,
          "soil_top", GEOM_BLOCK, "Load: " + BLOCK, numstep=2)
+    # augmented Lagrangian normal contact against the penalty, EPST = 1e6 held, default normals
+    # (with facet normals on these matching meshes the re-solutions after an augmentation
+    # stall: docs/verification/penalty.md)
+    for eps, etag in (("1.0e4", "1e4"), ("1.0e5", "1e5"), ("1.0e6", "1e6")):
+        for method in ("Penalty", "Augmented"):
+            line = pair("pipe_outer", "cavity", 0.5, eps, None, method=method, epst="1.0e6")
+            line = line.replace(" NORMALS None", "")
+            deck("s5_mu0.5_%s_epsn%s" % (method.lower(), etag),
+                 "mu = 0.5, METHOD %s, EPSN = %s, EPST = 1e6, default normals (Auto)." % (method, eps),
+                 "s5_coarse.msh", 9, line, "load_strip", GEOM_S5.format(mesh="s5_coarse.msh"), "Load: " + STRIP)
     deck("s5_block_mu0_facet", "Reproducer: full slip with facet normals, EPSN 1e7: Newton stalls "
          "in the first increment (s5.md).", "s5_block.msh", 9,
          pair("pipe_outer", "cavity", 0.0, "1.0e7", "Facet"), "soil_top", GEOM_BLOCK,

@@ -25,6 +25,21 @@ foreach(deck s5_mu0.5 s5_mu0 s5_bonded_penalty s5_mu0.5_smoothed s5_mu0.5_2pass 
   list(APPEND s5_names contact_${deck})
 endforeach()
 
+# Augmented Lagrangian normal contact against the penalty (mu = 0.5, EPST = 1e6 held, default
+# normals): stored frix values of 2026-11-25. Measured: the penalty's dD_v changes by 7.9 % from
+# EPSN 1e4 to 1e6, the augmented one's by 2e-6 (docs/verification/penalty.md). EPSN 1e4 with
+# augmentation needs 60 augmentations (about 40 s): slow.
+foreach(deck s5_mu0.5_penalty_epsn1e4 s5_mu0.5_penalty_epsn1e5 s5_mu0.5_penalty_epsn1e6
+             s5_mu0.5_augmented_epsn1e5 s5_mu0.5_augmented_epsn1e6 s5_mu0.5_augmented_epsn1e4)
+  add_test(NAME contact_${deck}
+           COMMAND bash ${s5_dir}/run_s5.sh ${FRIX_BIN} ${s5_decks}/${deck}.dck --reference ${s5_reference})
+  if(deck STREQUAL "s5_mu0.5_augmented_epsn1e4")
+    set_tests_properties(contact_${deck} PROPERTIES LABELS "regression;contact;slow" TIMEOUT ${scaled_300})
+  else()
+    list(APPEND s5_names contact_${deck})
+  endif()
+endforeach()
+
 # The POS3D file of the seed deck read back (postproc/pos3d_reader.py --summary, with the
 # contact fields).
 add_test(NAME contact_s5_pos3d_readback
