@@ -22,7 +22,7 @@
 !> then enter the node's tangent) until a converged increment carries it over onto the new face.
 module frix_contact_assembly
    use frix_kinds, only: dp
-   use frix_error, only: error_t
+   use frix_error, only: error_t, fatal_error
    use frix_model, only: model_t
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_face_projection, only: face_normal, face_shape_functions
@@ -99,11 +99,25 @@ contains
                cycle
             end if
             if (.not. pair%parameters%friction%frictionless()) system%frictional = .true.
+            call check_penalties_set(pair%id, pair%parameters, error)
+            if (allocated(error)) return
          end associate
       end do
       system%unsymmetric = system%frictional .or. any(system%passes%smooth)
       if (system%tied) call setup_tie_pattern(model, system, error)
    end subroutine setup_contact
+
+   !> An automatic penalty (a pair without EPSN or EPST) is set by the deck reader before the
+   !> analysis (frix_deck_contact); one still 0 here is an error, not a penalty of 0.
+   subroutine check_penalties_set(id, parameters, error)
+      integer, intent(in) :: id   !! the pair's id
+      type(contact_parameters_t), intent(in) :: parameters
+      type(error_t), allocatable, intent(out) :: error
+      logical :: unset
+      unset = parameters%normal%automatic_penalty .and. .not. parameters%normal%penalty() > 0.0_dp
+      unset = unset .or. (parameters%automatic_tangential_penalty .and. .not. parameters%tangential_penalty > 0.0_dp)
+      if (unset) call fatal_error(error, 'contact pair '//to_string(id)//': its automatic penalty was not set')
+   end subroutine check_penalties_set
 
    !> Ties: the checks of frix_tie_constraints and the node pairs their elimination needs, kept
    !> among the extra pairs of every sparse pattern.

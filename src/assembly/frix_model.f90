@@ -10,7 +10,7 @@ module frix_model
    use frix_mesh, only: mesh_t
    use frix_material, only: material_slot_t
    use frix_element, only: element_slot_t, kinematics_linear
-   use frix_contact_parameters, only: contact_parameters_t
+   use frix_contact_parameters, only: contact_parameters_t, default_penalty_factor
    implicit none
    private
 
@@ -124,6 +124,13 @@ module frix_model
       !> TIE: slave nodes farther than this from the master surface (reference configuration,
       !> length) are not tied; < 0: the default, a tenth of the mean master face size
       real(dp) :: tie_tolerance = -1.0_dp
+      !> PENALTY_FACTOR c of an automatic penalty: eps_N = c (M/h of the softer surface)
+      real(dp) :: penalty_factor = default_penalty_factor
+      !> How the penalties of a pair with an automatic one were chosen, e.g. `EPSN 2.69e+04
+      !> (automatic: 10 x 2692.31 = M/h of surface found_zmax), EPST 2.69e+04 (automatic)`,
+      !> printed at the start of the run and written to the listing's header; unallocated when
+      !> the deck gives every penalty the pair needs
+      character(len=:), allocatable :: penalty_note
       integer :: line = 0                   !! deck line
    end type contact_pair_t
 

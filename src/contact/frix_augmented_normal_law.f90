@@ -88,7 +88,7 @@ contains
    pure logical function active(self, gap, multiplier)
       class(augmented_normal_law_t), intent(in) :: self
       real(dp), intent(in) :: gap, multiplier
-      active = multiplier + self%penalty*(-gap) > 0.0_dp
+      active = multiplier + self%eps_n*(-gap) > 0.0_dp
    end function active
 
    !> p_N = lambda + eps_N (-g) where positive, else 0; dp_N = -eps_N dg in contact.
@@ -97,8 +97,8 @@ contains
       type(dual_t), intent(in) :: gap
       real(dp), intent(in) :: multiplier
       type(dual_t) :: pressure
-      if (multiplier + self%penalty*(-gap%value) > 0.0_dp) then
-         pressure = dual_constant(multiplier) + self%penalty*(-gap)
+      if (multiplier + self%eps_n*(-gap%value) > 0.0_dp) then
+         pressure = dual_constant(multiplier) + self%eps_n*(-gap)
       else
          pressure = dual_constant(0.0_dp)
       end if

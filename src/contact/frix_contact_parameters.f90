@@ -11,6 +11,7 @@ module frix_contact_parameters
    private
 
    public :: contact_parameters_t, new_contact_parameters, default_edge_tolerance, default_feature_angle
+   public :: default_penalty_factor
 
    !> Default feature angle of NORMALS Auto (degrees): adjacent master faces whose reference
    !> normals differ by at most this share averaged nodal normals, sharper edges keep facet
@@ -18,6 +19,12 @@ module frix_contact_parameters
    !> (360/12 = 30) and keeps right-angled (90 degrees) and 45-degree edges sharp
    !> (docs/contact.md, "Normals").
    real(dp), parameter :: default_feature_angle = 30.0_dp
+
+   !> Default factor c of an automatic penalty, eps_N = c min over the pair's deformable
+   !> surfaces of the mean M/h of the elements under them (docs/contact.md, "Choosing the
+   !> penalties": 10 to 100 times E_soft/h keeps the penetration at 1-10 % of the first
+   !> element's deformation; 10, the low end, for the best-conditioned system).
+   real(dp), parameter :: default_penalty_factor = 10.0_dp
 
    !> Default of `edge_tolerance` (parent coordinates: 1e-6 of half a face).
    real(dp), parameter :: default_edge_tolerance = 1.0e-6_dp
@@ -28,6 +35,9 @@ module frix_contact_parameters
    type :: contact_parameters_t
       class(normal_contact_law_t), allocatable :: normal   !! p_N(g, lambda): PENALTY
       real(dp) :: tangential_penalty = 0.0_dp  !! eps_T > 0: stick traction per unit elastic slip
+      !> .true.: a pair with friction created without EPST; eps_T is then set to the pair's eps_N
+      !> by the deck reader (0 until then) and this stays .true. to say where the value came from
+      logical :: automatic_tangential_penalty = .false.
       !> Search band (length): the contact search keeps slave/master candidates whose gap is
       !> below this, so that a node about to close is tracked; it does NOT activate contact,
       !> which the normal law decides (penalty: g < 0). CARAT's "gap tolerance" (1e-4 in
@@ -49,16 +59,22 @@ module frix_contact_parameters
 contains
 
    !> Validated parameters: gap_tolerance >= 0 always; eps_T > 0 unless the friction law is
-   !> frictionless (eps_T is then irrelevant and stored as given). The normal law is
+   !> frictionless (eps_T is then irrelevant and stored as given) or `automatic_tangential`
+   !> (a pair with friction without EPST: eps_T is set later, to eps_N). The normal law is
    !> validated by its registry (frix_normal_contact_law_registry).
-   subroutine new_contact_parameters(normal, tangential_penalty, gap_tolerance, friction, parameters, error)
+   subroutine new_contact_parameters(normal, tangential_penalty, gap_tolerance, friction, parameters, error, &
+                                     automatic_tangential)
       class(normal_contact_law_t), intent(in) :: normal
       real(dp), intent(in) :: tangential_penalty   !! eps_T (force/area/length)
       real(dp), intent(in) :: gap_tolerance        !! search band (length)
       class(friction_law_t), intent(in) :: friction
       type(contact_parameters_t), intent(out) :: parameters
       type(error_t), allocatable, intent(out) :: error
-      if (.not. friction%frictionless() .and. &
+      logical, intent(in), optional :: automatic_tangential   !! EPST not given (default .false.)
+      logical :: automatic
+      automatic = .false.
+      if (present(automatic_tangential)) automatic = automatic_tangential .and. .not. friction%frictionless()
+      if (.not. friction%frictionless() .and. .not. automatic .and. &
           .not. (tangential_penalty > 0.0_dp .and. tangential_penalty < huge(1.0_dp))) &
          call append_error(error, 'contact: tangential penalty EPST must be > 0 with friction, got '// &
                            to_string(tangential_penalty))
@@ -67,6 +83,7 @@ contains
       if (allocated(error)) return
       allocate (parameters%normal, source=normal)
       parameters%tangential_penalty = tangential_penalty
+      parameters%automatic_tangential_penalty = automatic
       parameters%gap_tolerance = gap_tolerance
       allocate (parameters%friction, source=friction)
    end subroutine new_contact_parameters

@@ -9,6 +9,12 @@
 !> Contact Mechanics*, 2nd ed., Springer 2006, ch. 6).
 !> The gap is a dual number so that the kernel differentiates p_N exactly; lambda is a real
 !> (it does not depend on the current coordinates).
+!>
+!> A law with a penalty eps_N (force/area/length) reports it through `penalty` and takes a
+!> new one through `set_penalty`; a law created without its penalty (a deck pair without EPSN)
+!> has `automatic_penalty` set, and the deck reader derives eps_N from the stiffness of the
+!> elements under the contact surfaces (docs/contact.md, "Choosing the penalties") and sets it
+!> before the analysis.
 module frix_normal_contact_law
    use frix_kinds, only: dp
    use frix_dual_number, only: dual_t
@@ -29,6 +35,9 @@ module frix_normal_contact_law
 
    type, abstract :: normal_contact_law_t
       character(len=:), allocatable :: name   !! deck keyword of the law (METHOD), e.g. PENALTY
+      !> .true.: created without its penalty, which the deck reader derives and sets
+      !> (`set_penalty`); it stays .true. afterwards, to say where the value came from
+      logical :: automatic_penalty = .false.
    contains
       !> Whether the point is in contact, i.e. carries a pressure p_N > 0, at gap g and
       !> multiplier lambda; where it is not, the kernel adds no force and no stiffness.
@@ -40,6 +49,10 @@ module frix_normal_contact_law
       procedure(stiffness_interface), deferred :: stiffness
       !> Whether and how the multipliers are augmented (default: not).
       procedure :: augmentation
+      !> eps_N (force/area/length); 0 for a law without a penalty (the default).
+      procedure :: penalty
+      !> Set eps_N (force/area/length, > 0); a law without a penalty ignores it (the default).
+      procedure :: set_penalty
    end type normal_contact_law_t
 
    abstract interface
@@ -72,4 +85,16 @@ contains
       type(augmentation_t) :: settings
       settings = augmentation_t()
    end function augmentation
+
+   !> The default: a law without a penalty, eps_N = 0.
+   pure real(dp) function penalty(self)
+      class(normal_contact_law_t), intent(in) :: self
+      penalty = 0.0_dp
+   end function penalty
+
+   !> The default: a law without a penalty ignores `eps`.
+   pure subroutine set_penalty(self, eps)
+      class(normal_contact_law_t), intent(inout) :: self
+      real(dp), intent(in) :: eps   !! eps_N (force/area/length)
+   end subroutine set_penalty
 end module frix_normal_contact_law

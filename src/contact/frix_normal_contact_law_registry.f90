@@ -3,7 +3,8 @@
 !> normal contact law object (keywords and property names match case-insensitively). Each
 !> law's file parses and validates its own properties (the keyword lookup and the union of the
 !> properties are frix_contact_law_table's):
-!>   PENALTY   p_N = eps_N max(0, -g), property EPSN (required, > 0); the default of a pair
+!>   PENALTY   p_N = eps_N max(0, -g), property EPSN (> 0; without it eps_N is derived by the
+!>             deck reader, docs/contact.md "Choosing the penalties"); the default of a pair
 !>             without METHOD
 !>   AUGMENTED p_N = max(0, lambda + eps_N (-g)) with Uzawa augmentations of lambda, properties
 !>             EPSN, PENTOL, MAXAUG (frix_augmented_normal_law)

@@ -3,7 +3,9 @@
 !> eps_N > 0 a stiffness per unit area (stress per length, e.g. kPa/m), so that the nodal force
 !> eps_N (-g) A_s does not depend on the mesh (Wriggers, *Computational Contact Mechanics*,
 !> 2nd ed., Springer 2006, ch. 6, the penalty method). The point is in contact iff g < 0; the Lagrange multiplier
-!> is not used. Property EPSN = eps_N (required, > 0 and finite).
+!> is not used. Property EPSN = eps_N (> 0 and finite); without it the law is created with
+!> `automatic_penalty` set and eps_N = 0, and the deck reader sets eps_N from the stiffness of
+!> the elements under the contact surfaces (docs/contact.md, "Choosing the penalties").
 module frix_penalty_normal_law
    use frix_kinds, only: dp
    use frix_error, only: error_t, append_error
@@ -17,11 +19,15 @@ module frix_penalty_normal_law
    public :: penalty_normal_law_t, new_penalty_normal_law, penalty_from_properties, penalty_properties
 
    type, extends(normal_contact_law_t) :: penalty_normal_law_t
-      real(dp) :: penalty = 0.0_dp   !! eps_N (force/area/length), > 0
+      !> eps_N (force/area/length), > 0 (0 until an automatic penalty is set); read it through
+      !> `penalty()` (the component cannot share the type-bound procedure's name)
+      real(dp) :: eps_n = 0.0_dp
    contains
       procedure :: active
       procedure :: pressure
       procedure :: stiffness
+      procedure :: penalty => penalty_value
+      procedure :: set_penalty => set_penalty_value
    end type penalty_normal_law_t
 
 contains
@@ -32,10 +38,10 @@ contains
       real(dp), intent(in) :: penalty   !! eps_N (force/area/length)
       type(penalty_normal_law_t) :: law
       law%name = 'PENALTY'
-      law%penalty = penalty
+      law%eps_n = penalty
    end function new_penalty_normal_law
 
-   !> PENALTY's property EPSN (> 0, no default: a contact pair must give it).
+   !> PENALTY's property EPSN (> 0; a pair without it gets an automatic penalty).
    function penalty_properties() result(specs)
       type(property_spec_t), allocatable :: specs(:)
       allocate (specs(1))
@@ -46,8 +52,8 @@ contains
       specs(1)%bound_message = 'EPSN must be positive'
    end function penalty_properties
 
-   !> PENALTY: property EPSN (required, > 0 and finite). A missing EPSN is reported as the
-   !> deck's contact pair that lacks it.
+   !> PENALTY: property EPSN (> 0 and finite). Without EPSN the law has eps_N = 0 and
+   !> `automatic_penalty` set: the deck reader derives eps_N once the model is complete.
    subroutine penalty_from_properties(properties, law, error)
       type(property_list_t), intent(in) :: properties
       class(normal_contact_law_t), allocatable, intent(out) :: law
@@ -56,12 +62,12 @@ contains
       logical :: found
       call properties%check_names(spec_names(penalty_properties()), error)
       call properties%take_real('EPSN', penalty, found, error, default=0.0_dp)
-      if (.not. found) then
-         call append_error(error, 'contact pair without EPSN (normal penalty)')
-      else if (.not. (penalty > 0.0_dp .and. penalty < huge(1.0_dp))) then
+      if (found .and. .not. (penalty > 0.0_dp .and. penalty < huge(1.0_dp))) then
          call append_error(error, trim(properties%owner)//': EPSN must be > 0, got '//to_string(penalty))
       end if
-      if (.not. allocated(error)) allocate (law, source=new_penalty_normal_law(penalty))
+      if (allocated(error)) return
+      allocate (law, source=new_penalty_normal_law(penalty))
+      law%automatic_penalty = .not. found
    end subroutine penalty_from_properties
 
    !> In contact iff g < 0 (NaN: not in contact).
@@ -78,7 +84,7 @@ contains
       real(dp), intent(in) :: multiplier
       type(dual_t) :: pressure
       if (gap%value < 0.0_dp) then
-         pressure = self%penalty*(-gap)
+         pressure = self%eps_n*(-gap)
       else
          pressure = dual_constant(0.0_dp)
       end if
@@ -87,6 +93,19 @@ contains
    !> eps_N.
    pure real(dp) function stiffness(self)
       class(penalty_normal_law_t), intent(in) :: self
-      stiffness = self%penalty
+      stiffness = self%eps_n
    end function stiffness
+
+   !> eps_N (0 while an automatic penalty is not set yet).
+   pure real(dp) function penalty_value(self)
+      class(penalty_normal_law_t), intent(in) :: self
+      penalty_value = self%eps_n
+   end function penalty_value
+
+   !> eps_N = eps (not checked: the caller derives or validates it).
+   pure subroutine set_penalty_value(self, eps)
+      class(penalty_normal_law_t), intent(inout) :: self
+      real(dp), intent(in) :: eps   !! eps_N (force/area/length)
+      self%eps_n = eps
+   end subroutine set_penalty_value
 end module frix_penalty_normal_law

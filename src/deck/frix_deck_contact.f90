@@ -12,16 +12,17 @@ module frix_deck_contact
    use frix_friction_law_registry, only: create_pair_friction_law, friction_property_specs, default_friction_law
    use frix_normal_contact_law_registry, only: create_normal_contact_law, normal_property_specs, &
                                                default_normal_method
-   use frix_contact_parameters, only: new_contact_parameters, default_feature_angle
+   use frix_contact_parameters, only: new_contact_parameters, default_feature_angle, default_penalty_factor
    use frix_contact_kernel, only: max_ring_nodes
    use frix_contact_patches, only: largest_patch_ring, all_faces_angle
    use frix_model, only: model_t, contact_pair_t
+   use frix_surface_stiffness, only: surface_stiffness
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, require, s_contact
    implicit none
    private
 
-   public :: read_contact_pairs
+   public :: read_contact_pairs, set_automatic_penalties
 
    !> NORMALS choices (0: not given, Auto for a deformable master)
    integer, parameter :: normals_default = 0, normals_facet = 1, normals_smoothed = 2, normals_auto = 3
@@ -42,6 +43,8 @@ module frix_deck_contact
       real(dp) :: feature_angle = default_feature_angle   !! degrees
       real(dp) :: plane_point(3) = 0.0_dp, plane_normal(3) = 0.0_dp
       real(dp) :: eps_t = 0.0_dp
+      real(dp) :: penalty_factor = default_penalty_factor   !! PENALTY_FACTOR c
+      integer :: factor_token = 0            !! token of PENALTY_FACTOR's value, 0 if not given
       real(dp) :: gap_tolerance = 0.0_dp
       integer :: passes = 1
       logical :: has_eps_t = .false., has_point = .false., has_normal = .false.
@@ -51,9 +54,11 @@ contains
 
    !> CONTACT CONDITIONS: one pair per line,
    !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE [POINT x y z NORMAL nx ny nz]
-   !>  [METHOD Penalty] EPSN <eps_N> [EPST <eps_T>] [MU <mu>] [LAW Coulomb|Frictionless]
-   !>  [GAPTOL <g>] [PASSES 1|2] [NORMALS Facet|Smoothed|Auto] [FEATURE_ANGLE <degrees>]`, the
-   !> keywords after the surfaces in any order (a deformable master without NORMALS: Auto). The normal law's properties (EPSN) and the METHOD a pair without one gets
+   !>  [METHOD Penalty] [EPSN <eps_N>] [EPST <eps_T>] [PENALTY_FACTOR <c>] [MU <mu>]
+   !>  [LAW Coulomb|Frictionless] [GAPTOL <g>] [PASSES 1|2] [NORMALS Facet|Smoothed|Auto]
+   !>  [FEATURE_ANGLE <degrees>]`, the keywords after the surfaces in any order (a deformable
+   !> master without NORMALS: Auto; without EPSN or EPST the penalty is automatic,
+   !> set_automatic_penalties). The normal law's properties (EPSN) and the METHOD a pair without one gets
    !> come from the normal law registry; the friction properties (MU) and the law a pair without LAW gets from the
    !> friction registry (MU > 0: Coulomb; else frictionless, EPST not needed).
    subroutine read_contact_pairs(reader, model)
@@ -213,6 +218,11 @@ contains
             call reader%take_real(line, position, 'EPST', options%eps_t, ok)
             call require(reader, ok, options%eps_t > 0.0_dp, line, position - 1, 'EPST must be positive')
             options%has_eps_t = ok
+         case ('PENALTY_FACTOR')
+            options%factor_token = position
+            call reader%take_real(line, position, 'PENALTY_FACTOR', options%penalty_factor, ok)
+            call require(reader, ok, options%penalty_factor > 0.0_dp, line, position - 1, &
+                         'PENALTY_FACTOR must be positive')
          case ('GAPTOL')
             call reader%take_real(line, position, 'GAPTOL', options%gap_tolerance, ok)
             call require(reader, ok, options%gap_tolerance >= 0.0_dp, line, position - 1, &
@@ -246,7 +256,8 @@ contains
                cycle
             end if
             call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
-                               joined(spec_names(normal_specs))//', EPST, '//joined(spec_names(friction_specs))// &
+                               joined(spec_names(normal_specs))//', EPST, PENALTY_FACTOR, '// &
+                               joined(spec_names(friction_specs))// &
                                ', METHOD, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
             ok = .false.
          end select
@@ -289,8 +300,8 @@ contains
    end subroutine check_feature_angle
 
    !> The pair's laws, parameters, plane and passes from its options, in this order: the normal
-   !> law, the rigid plane, the friction law and EPST, the parameters, the smoothed normals'
-   !> patches. The first mistake is reported; ok false then.
+   !> law, the rigid plane, the friction law, the parameters (EPST), PENALTY_FACTOR, the
+   !> smoothed normals' patches. The first mistake is reported; ok false then.
    subroutine make_pair_parameters(reader, model, line, options, pair, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(in) :: model
@@ -318,13 +329,13 @@ contains
       call create_pair_friction_law(trim(law), options%friction, friction, error)
       call report_error(reader, line, max(1, options%law_token), error, ok)
       if (.not. ok) return
-      if (.not. friction%frictionless() .and. .not. options%has_eps_t) then
-         call reader%report(line, 1, 'a contact pair with friction needs EPST (tangential penalty)')
-         ok = .false.
-         return
-      end if
-      call new_contact_parameters(normal, options%eps_t, options%gap_tolerance, friction, pair%parameters, error)
+      call new_contact_parameters(normal, options%eps_t, options%gap_tolerance, friction, pair%parameters, error, &
+                                  automatic_tangential=.not. options%has_eps_t)
       call report_error(reader, line, 1, error, ok)
+      if (ok .and. options%factor_token > 0) &
+         call require(reader, ok, pair%parameters%normal%automatic_penalty, line, options%factor_token - 1, &
+                      'PENALTY_FACTOR belongs to an automatic EPSN (a pair without EPSN)')
+      pair%penalty_factor = options%penalty_factor
       if (ok) call set_normals(reader, model, line, options, pair, ok)
    end subroutine make_pair_parameters
 
@@ -416,6 +427,106 @@ contains
                          to_string(max_ring_nodes)//' are supported (4 faces at each of its nodes)')
       ok = .false.
    end subroutine check_patch_ring
+
+   !> The automatic penalties of the contact pairs without EPSN or (with friction) EPST, once the
+   !> model is complete (mesh, materials, element blocks; docs/contact.md, "Choosing the
+   !> penalties"):
+   !>   eps_N = c min(S_slave, S_master),  S = mean over the surface's faces of M/h
+   !> (frix_surface_stiffness; a rigid plane has no S_master), c = PENALTY_FACTOR (default
+   !> 10); eps_T = eps_N (given or automatic) or, for a normal law without a penalty, the same
+   !> c min(S_slave, S_master). Each such pair gets its penalty_note.
+   subroutine set_automatic_penalties(reader, model)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(inout) :: model
+      integer :: p
+      do p = 1, size(model%contact_pairs)
+         associate (pair => model%contact_pairs(p))
+            if (pair%tied) cycle
+            if (.not. (pair%parameters%normal%automatic_penalty .or. &
+                       pair%parameters%automatic_tangential_penalty)) cycle
+            call set_pair_penalties(reader, model, pair)
+         end associate
+      end do
+   end subroutine set_automatic_penalties
+
+   !> One pair's automatic eps_N and eps_T and their note (set_automatic_penalties).
+   subroutine set_pair_penalties(reader, model, pair)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(contact_pair_t), intent(inout) :: pair
+      real(dp) :: stiffness, eps_n
+      integer :: softer
+      character(len=:), allocatable :: derived, note
+      call softer_surface(model, pair, softer, stiffness)
+      if (.not. (stiffness > 0.0_dp .and. pair%penalty_factor*stiffness < huge(1.0_dp))) then
+         call reader%report(reader%lines(pair%line), 1, 'cannot derive the automatic penalty: M/h of surface '// &
+                            model%mesh%surfaces(softer)%name//' is '//to_string(stiffness)//'; give EPSN and EPST')
+         return
+      end if
+      derived = '(automatic: '//factor_text(pair%penalty_factor)//' x '//penalty_text(stiffness)// &
+                ' = M/h of surface '//model%mesh%surfaces(softer)%name//')'
+      associate (normal => pair%parameters%normal)
+         if (normal%automatic_penalty) call normal%set_penalty(pair%penalty_factor*stiffness)
+         eps_n = normal%penalty()
+         if (normal%automatic_penalty) then
+            note = 'EPSN '//penalty_text(eps_n)//' '//derived
+         else if (eps_n > 0.0_dp) then
+            note = 'EPSN '//penalty_text(eps_n)//' (given)'
+         else
+            note = 'METHOD '//normal%name
+         end if
+      end associate
+      if (pair%parameters%automatic_tangential_penalty) then
+         if (eps_n > 0.0_dp) then
+            pair%parameters%tangential_penalty = eps_n
+            note = note//', EPST '//penalty_text(eps_n)//' (automatic: = EPSN)'
+         else
+            pair%parameters%tangential_penalty = pair%penalty_factor*stiffness
+            note = note//', EPST '//penalty_text(pair%parameters%tangential_penalty)//' '//derived
+         end if
+      else if (.not. pair%parameters%friction%frictionless()) then
+         note = note//', EPST '//penalty_text(pair%parameters%tangential_penalty)//' (given)'
+      end if
+      pair%penalty_note = note
+   end subroutine set_pair_penalties
+
+   !> The softer of the pair's deformable surfaces (the slave's, and the master's unless it is a
+   !> rigid plane): its index and its mean M/h (ties: the slave).
+   subroutine softer_surface(model, pair, surface, stiffness)
+      type(model_t), intent(in) :: model
+      type(contact_pair_t), intent(in) :: pair
+      integer, intent(out) :: surface
+      real(dp), intent(out) :: stiffness   !! mean M/h (force/area/length)
+      real(dp) :: master
+      surface = pair%slave_surface
+      stiffness = surface_stiffness(model, surface)
+      if (pair%master_surface == 0) return
+      master = surface_stiffness(model, pair%master_surface)
+      if (master < stiffness) then
+         surface = pair%master_surface
+         stiffness = master
+      end if
+   end subroutine softer_surface
+
+   !> PENALTY_FACTOR for messages: a whole number as such (10), else as penalty_text.
+   pure function factor_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      if (value == aint(value) .and. value < 1.0e6_dp) then
+         text = to_string(nint(value))
+      else
+         text = penalty_text(value)
+      end if
+   end function factor_text
+
+   !> A penalty or stiffness for messages: 5 significant digits, e.g. 2.6923E+04.
+   pure function penalty_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(es11.4e2)') value
+      text = trim(adjustl(buffer))
+   end function penalty_text
 
    !> `pairs` with `pair` appended, in a longer array (an array constructor would leak the
    !> laws' allocatable components with gfortran 12, docs/testing.md).

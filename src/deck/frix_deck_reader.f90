@@ -7,7 +7,8 @@
 !> Sections are processed in a fixed order, whatever their order in the file, so that every
 !> reference points backwards: controls, curves, materials; the mesh (MESH FILE, NODE COORDS,
 !> element lines of STRUCTURE ELEMENTS, MESH BLOCK, then the SET lines of STRUCTURE ELEMENTS);
-!> NODE SETS, SURFACES; conditions and loads; STEPS; RESULTS. Each section has its reader in
+!> NODE SETS, SURFACES; conditions and loads; STEPS; RESULTS; then, in a valid model (mesh,
+!> materials and element blocks complete), the automatic contact penalties. Each section has its reader in
 !> a module of its own (frix_deck_controls, _properties, _mesh, _loads, _contact, _results).
 module frix_deck_reader
    use frix_error, only: error_t
@@ -22,7 +23,7 @@ module frix_deck_reader
    use frix_deck_mesh, only: read_mesh_file, read_node_coords, read_mesh_blocks, finish_mesh_numbering, &
                              read_node_sets, read_surfaces
    use frix_deck_loads, only: read_dirichlet, read_neumann, read_body_forces
-   use frix_deck_contact, only: read_contact_pairs
+   use frix_deck_contact, only: read_contact_pairs, set_automatic_penalties
    use frix_deck_results, only: read_results
    implicit none
    private
@@ -67,6 +68,7 @@ contains
       call read_steps(reader, model)
       call read_results(reader, model)
       call validate_model(reader, model)
+      if (.not. reader%diagnostics%has_errors()) call set_automatic_penalties(reader, model)
 
       call reader%diagnostics%finish(error)
    end subroutine read_deck

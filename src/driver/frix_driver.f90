@@ -595,8 +595,15 @@ contains
    subroutine print_banner(model, context)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(in) :: context
+      integer :: k
       write (*, '(a)') 'frix: '//model%deck_path//': '//to_string(model%mesh%n_nodes)//' nodes, '// &
          to_string(model%mesh%n_elements)//' elements, '//to_string(3*model%mesh%n_nodes)// &
          ' equations, '//to_string(size(model%steps))//' steps; linear solver '//context%solver%name()
+      do k = 1, size(model%contact_pairs)
+         associate (pair => model%contact_pairs(k))
+            if (allocated(pair%penalty_note)) &
+               write (*, '(a)') 'frix: contact pair '//to_string(pair%id)//': '//pair%penalty_note
+         end associate
+      end do
    end subroutine print_banner
 end module frix_driver

@@ -58,6 +58,8 @@ contains
       if (model%results%listing) then
          call self%listing%open(base//'_listing.txt', model%deck_path, frix_version, error)
          if (allocated(error)) return
+         call write_penalty_notes(self, model, error)
+         if (allocated(error)) return
       end if
       if (model%results%vtk) then
          call self%vtk%open(base, error)
@@ -90,6 +92,24 @@ contains
          end if
       end if
    end subroutine output_open
+
+   !> The listing's header: one comment line per contact pair with an automatic penalty
+   !> (`# contact pair <id>: EPSN ...`, its penalty_note); none for pairs whose deck gives
+   !> every penalty, whose listings stay as they were.
+   subroutine write_penalty_notes(self, model, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      if (.not. allocated(model%contact_pairs)) return
+      do k = 1, size(model%contact_pairs)
+         associate (pair => model%contact_pairs(k))
+            if (.not. allocated(pair%penalty_note)) cycle
+            call self%listing%write_comment('contact pair '//to_string(pair%id)//': '//pair%penalty_note, error)
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine write_penalty_notes
 
    !> Write the results of one converged increment: a row of the CSV files for every
    !> increment, the listing, VTK, POS3D and HDF5 files for those written in full.

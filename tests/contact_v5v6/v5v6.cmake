@@ -150,6 +150,20 @@ add_test(NAME v6_hertz
                  --check max_err=0:0.03)
 set_tests_properties(v6_hertz PROPERTIES LABELS "regression;contact")
 
+# The same without EPSN (v6_hertz_autopenalty.dck; docs/verification/penalty.md, "Automatic
+# penalty"): EPSN = 10 x 1.1218e7 = 1.1218e8 (mean M/h of the block's top faces, the softer
+# surface: its faces grow away from the contact) against 1e9. Measured against v6_hertz.dck:
+# p0_ratio 0.98959 against 0.99068 (-0.11 %), a_fit_ratio 1.0053 against 1.0047 (+0.06 %),
+# p0_fit_ratio 0.99598 against 0.99735 (-0.14 %). Bounds: the v6_hertz checks, and p0_ratio and
+# a_fit_ratio within 0.25 % of the hand-tuned values (about twice the larger difference).
+add_test(NAME v6_hertz_autopenalty
+         COMMAND bash ${V5V6_DIR}/run_v6.sh ${FRIX_BIN} ${V6_INPUTS}/v6_hertz_autopenalty.dck
+                 --check p0_ratio=0.98820:0.99316 --check a_fit_ratio=1.00219:1.00721
+                 --check p0_fit_ratio=0.95:1.05
+                 --check a_last_ratio=0:1 --check a_open_ratio=1:2 --check force_ratio=0.99:1.01
+                 --check max_err=0:0.03)
+set_tests_properties(v6_hertz_autopenalty PROPERTIES LABELS "regression;contact")
+
 # V6 Hertz refined, h = 0.004 (a/h = 24), about 3 min on the shared 2-core machine: label slow.
 # Same checks as v6_hertz (measured values in docs/verification/v5_v6.md).
 add_test(NAME v6_hertz_fine

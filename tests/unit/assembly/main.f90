@@ -2,6 +2,8 @@
 program test_assembly
    use frix_testing, only: run_suites, new_testsuite
    use test_tie_constraints, only: collect_tie_constraints
+   use test_surface_stiffness, only: collect_surface_stiffness
    implicit none
-   call run_suites([new_testsuite('tie_constraints', collect_tie_constraints)])
+   call run_suites([new_testsuite('tie_constraints', collect_tie_constraints), &
+                    new_testsuite('surface_stiffness', collect_surface_stiffness)])
 end program test_assembly

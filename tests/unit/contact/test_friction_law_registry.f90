@@ -128,8 +128,16 @@ contains
       if (allocated(error)) return
       call check_message_contains(error, failure, 'gap tolerance must be >= 0')
       if (allocated(error)) return
+      ! without EPST (automatic: the deck reader sets eps_T = eps_N later) eps_T = 0 is accepted
+      call new_contact_parameters(new_penalty_normal_law(1.0e8_dp), 0.0_dp, 0.0_dp, law, parameters, failure, &
+                                  automatic_tangential=.true.)
+      call check(error, .not. allocated(failure) .and. parameters%automatic_tangential_penalty, &
+                 'friction without EPST: automatic eps_T')
+      if (allocated(error)) return
       call create_friction_law('FRICTIONLESS', no_names, no_values, law, failure)
-      call new_contact_parameters(new_penalty_normal_law(1.0e8_dp), 0.0_dp, 0.0_dp, law, parameters, failure)
-      call check(error, .not. allocated(failure), 'frictionless needs no EPST')
+      call new_contact_parameters(new_penalty_normal_law(1.0e8_dp), 0.0_dp, 0.0_dp, law, parameters, failure, &
+                                  automatic_tangential=.true.)
+      call check(error, .not. allocated(failure) .and. .not. parameters%automatic_tangential_penalty, &
+                 'frictionless needs no EPST, automatic or not')
    end subroutine test_parameters
 end module test_friction_law_registry

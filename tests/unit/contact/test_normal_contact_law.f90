@@ -1,4 +1,5 @@
-!> The normal contact law registry and the penalty law: METHOD keywords, the EPSN checks, and
+!> The normal contact law registry and the penalty law: METHOD keywords, the EPSN checks, a law
+!> created without EPSN (automatic penalty, set later through set_penalty), and
 !> p_N = eps_N max(0, -g) with its derivative on a hand example (eps_N = 1e4, gap seeded as
 !> the first unknown: g = -0.01 gives p_N = 100 and dp_N/dg = -1e4; g = 0.01 gives zero).
 module test_normal_contact_law
@@ -22,7 +23,8 @@ contains
    subroutine collect_normal_contact_law(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('PENALTY from EPSN, the default METHOD', test_create), &
-               new_unittest('missing, negative EPSN, unknown METHOD', test_errors), &
+               new_unittest('without EPSN: an automatic penalty, set later', test_automatic), &
+               new_unittest('negative, zero, huge EPSN, unknown METHOD', test_errors), &
                new_unittest('penalty p_N and dp_N/dg, g < 0 and g > 0', test_pressure)]
    end subroutine collect_normal_contact_law
 
@@ -48,18 +50,43 @@ contains
       call check(error, law%name == 'PENALTY', 'named PENALTY')
       if (allocated(error)) return
       call check_close(error, law%stiffness(), penalty, 0.0_dp, message='stiffness = EPSN')
+      if (allocated(error)) return
+      call check_close(error, law%penalty(), penalty, 0.0_dp, message='penalty() = EPSN')
+      if (allocated(error)) return
+      call check(error, .not. law%automatic_penalty, 'a given EPSN is not automatic')
    end subroutine test_create
+
+   !> Without EPSN the registry creates the law with automatic_penalty set and eps_N = 0; the
+   !> deck reader's set_penalty then gives it its eps_N, which pressure and stiffness use.
+   subroutine test_automatic(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(normal_contact_law_t), allocatable :: law
+      type(error_t), allocatable :: failure
+      type(property_list_t) :: nothing
+      type(dual_t) :: gap(1), pressure
+      call create_normal_contact_law('PENALTY', nothing, law, failure)
+      call check(error, .not. allocated(failure) .and. allocated(law), 'created without EPSN')
+      if (allocated(error)) return
+      call check(error, law%automatic_penalty, 'marked as needing an automatic penalty')
+      if (allocated(error)) return
+      call check(error, law%penalty() == 0.0_dp, 'eps_N = 0 until set')
+      if (allocated(error)) return
+      call law%set_penalty(2.5e5_dp)
+      call check_close(error, law%penalty(), 2.5e5_dp, 0.0_dp, message='penalty() after set_penalty')
+      if (allocated(error)) return
+      call check_close(error, law%stiffness(), 2.5e5_dp, 0.0_dp, message='stiffness after set_penalty')
+      if (allocated(error)) return
+      call check(error, law%automatic_penalty, 'still marked automatic after set_penalty')
+      if (allocated(error)) return
+      gap = dual_variable([-2.0e-3_dp], 1)
+      pressure = law%pressure(gap(1), 0.0_dp)
+      call check_close(error, pressure%value, 500.0_dp, 1.0e-14_dp, message='p_N = eps_N (-g) = 2.5e5 x 2e-3')
+   end subroutine test_automatic
 
    subroutine test_errors(error)
       type(error_t), allocatable, intent(out) :: error
       class(normal_contact_law_t), allocatable :: law
       type(error_t), allocatable :: failure
-      type(property_list_t) :: nothing
-      call create_normal_contact_law('PENALTY', nothing, law, failure)
-      call check_message_contains(error, failure, 'contact pair without EPSN (normal penalty)')
-      if (allocated(error)) return
-      call check(error, .not. allocated(law), 'no law without EPSN')
-      if (allocated(error)) return
       call create_normal_contact_law('PENALTY', epsn(-1.0e6_dp), law, failure)
       call check_message_contains(error, failure, 'PENALTY: EPSN must be > 0')
       if (allocated(error)) return

@@ -1,0 +1,70 @@
+!> The normal stiffness of the elements under a surface, from which an automatic contact
+!> penalty is derived (docs/contact.md, "Choosing the penalties").
+!>
+!> A face of an element of modulus M and size h normal to the face behaves, under a pressure
+!> p on the face, like a spring of stiffness M/h per unit area (force/area/length, the unit of
+!> eps_N): the face moves by about p h / M. With eps_N = c M/h the penetration p / eps_N is 1/c
+!> of that motion.
+!>   M  = (C_11 + C_22 + C_33)/3 of the material's small-strain elastic tangent (6 x 6 Voigt,
+!>        at zero strain): the constrained (oedometric) modulus, lambda + 2 mu =
+!>        E (1 - nu)/((1 + nu)(1 - 2 nu)) for an isotropic law, the stiffness of an element
+!>        compressed across a face while its neighbours hold it sideways (force/area);
+!>   h  = V / A, the element's reference volume over the face's reference area (length): its
+!>        thickness normal to the face for a prism on the face, e.g. a brick element.
+!> A surface's value is the mean of M/h over its faces (each face counts once, whatever its
+!> area).
+module frix_surface_stiffness
+   use frix_kinds, only: dp
+   use frix_mesh, only: hex8_face_nodes
+   use frix_material, only: material_t
+   use frix_surface_load, only: face_area_weights
+   use frix_model, only: model_t
+   implicit none
+   private
+
+   public :: representative_modulus, face_stiffness, surface_stiffness
+
+contains
+
+   !> M = (C_11 + C_22 + C_33)/3 of the elastic tangent at zero strain (force/area).
+   pure real(dp) function representative_modulus(material) result(modulus)
+      class(material_t), intent(in) :: material
+      real(dp) :: tangent(6, 6)
+      call material%elastic_tangent(tangent)
+      modulus = (tangent(1, 1) + tangent(2, 2) + tangent(3, 3))/3.0_dp
+   end function representative_modulus
+
+   !> M/h (force/area/length) of local face `face` (1..6, frix_mesh) of element `element`,
+   !> h = V/A in the reference configuration; the element's block gives its formulation
+   !> (for V) and material (for M).
+   real(dp) function face_stiffness(model, element, face) result(stiffness)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: element   !! internal element number
+      integer, intent(in) :: face      !! local face number
+      real(dp) :: coords(3, 8), weights(8), area_weights(4), volume, area
+      integer :: block
+      block = model%mesh%element_block(element)
+      coords = model%mesh%coords(:, model%mesh%connectivity(:, element))
+      call model%blocks(block)%element%formulation%volume_weights(coords, weights)
+      volume = sum(weights)
+      call face_area_weights(coords(:, hex8_face_nodes(:, face)), area_weights)
+      area = sum(area_weights)
+      stiffness = representative_modulus(model%materials(model%blocks(block)%material)%law)*area/volume
+   end function face_stiffness
+
+   !> Mean of M/h over the faces of surface `surface` (index into model%mesh%surfaces); 0 for a
+   !> surface without faces.
+   real(dp) function surface_stiffness(model, surface) result(mean)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: surface
+      integer :: k, n_faces
+      mean = 0.0_dp
+      associate (faces => model%mesh%surfaces(surface))
+         n_faces = size(faces%elements)
+         do k = 1, n_faces
+            mean = mean + face_stiffness(model, faces%elements(k), faces%faces(k))
+         end do
+      end associate
+      if (n_faces > 0) mean = mean/n_faces
+   end function surface_stiffness
+end module frix_surface_stiffness
