@@ -275,6 +275,8 @@ contains
       real(dp) :: force3(3), tangent3(3, 3), shape(4), d_xi(4), d_eta(4)
       ! absent (unallocated) unless the node's anchor lies on another face / normals are smoothed
       real(dp), allocatable :: x_anchor_face(:, :), x_ring(:, :)
+      ! absent (unallocated) unless the friction is augmented (TMETHOD Augmented)
+      real(dp), allocatable :: lambda_t(:)
       integer, allocatable :: patch(:, :)
       integer :: p, i, a, slave, nodes(max_kernel_nodes), n_nodes, n, node, attempt, first_ring
       real(dp) :: touch_normal, touch_tangential
@@ -295,12 +297,14 @@ contains
             do i = 1, size(pass%slave_nodes)
                slave = pass%slave_nodes(i)
                x_slave = model%mesh%coords(:, slave) + u(3*slave - 2:3*slave)
+               if (pair%parameters%tangential_augmented) lambda_t = pass%tangential_multiplier(:, i)
                if (pass%rigid) then
                   do attempt = 1, 2
                      call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
                                              pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
                                              pass%result(i), force3, tangent3, branch=pass%branch(i), &
-                                             friction_scale=system%friction_scale, multiplier=pass%multiplier(i))
+                                             friction_scale=system%friction_scale, multiplier=pass%multiplier(i), &
+                                             tangential_multiplier=lambda_t)
                      if (.not. present(matrix)) exit
                      if (.not. slip_reversed(pass, i)) exit
                   end do
@@ -337,7 +341,7 @@ contains
                                          pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
                                          x_anchor_face=x_anchor_face, branch=pass%branch(i), &
                                          friction_scale=system%friction_scale, x_ring=x_ring, patch_faces=patch, &
-                                         multiplier=pass%multiplier(i))
+                                         multiplier=pass%multiplier(i), tangential_multiplier=lambda_t)
                   if (.not. present(matrix)) exit
                   if (.not. slip_reversed(pass, i)) exit
                end do
@@ -458,6 +462,7 @@ contains
       integer :: p, i
       do p = 1, size(system%passes)
          system%passes(p)%committed_multiplier = system%passes(p)%multiplier
+         system%passes(p)%committed_tangential_multiplier = system%passes(p)%tangential_multiplier
          if (system%passes(p)%tied) cycle   ! a tie's foot points never change
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)

@@ -1,8 +1,11 @@
 !> The multipliers of augmented Lagrangian contact (METHOD Augmented,
-!> frix_augmented_normal_law) in the global system: after a converged Newton solution of an
-!> increment, the largest penetration of every augmented pass against its tolerance, and
-!> Uzawa's update lambda <- p_N = max(0, lambda + eps_N (-g)) of every slave node (Simo &
-!> Laursen, Comput. Struct. 42 (1992) 97-116); the driver then solves the increment again
+!> frix_augmented_normal_law; TMETHOD Augmented for friction) in the global system: after a
+!> converged Newton solution of an increment, the largest penetration of every augmented pass
+!> against its tolerance (and, with augmented friction, the largest elastic slip
+!> |t - lambda_T| / eps_T of its sticking nodes against the stick tolerance), and Uzawa's
+!> update lambda <- p_N = max(0, lambda + eps_N (-g)), lambda_T <- t of every slave node
+!> (Simo & Laursen, Comput. Struct. 42 (1992) 97-116; Laursen & Simo, IJNME 36 (1993)
+!> 3451-3485, for the frictional part); the driver then solves the increment again
 !> (frix_augmentation). The multipliers are committed with the contact state
 !> (frix_contact_assembly's commit_contact) and go back to the committed ones when an
 !> increment is given up (restore_multipliers).
@@ -10,7 +13,8 @@ module frix_contact_augmentation
    use frix_kinds, only: dp
    use frix_model, only: model_t
    use frix_normal_contact_law, only: augmentation_t
-   use frix_contact_kernel, only: contact_open
+   use frix_contact_kernel, only: contact_open, contact_stick
+   use frix_contact_pass, only: contact_pass_t
    use frix_contact_assembly, only: contact_system_t
    implicit none
    private
@@ -18,18 +22,21 @@ module frix_contact_augmentation
    public :: penetration_check_t, check_penetrations, augment_multipliers, restore_multipliers
    public :: max_augmentations, default_tolerance_fraction
 
-   !> Default penetration tolerance: this fraction of the master's mean face size (S1: with
+   !> Default penetration tolerance: this fraction of the master's mean face size (against a
+   !> rigid plane: the square root of the slave nodes' mean tributary area) (S1: with
    !> 1e-3 the step-2 pressure changes stay below eps_N times the tolerance and the result
    !> keeps the penalty's dependence on EPSN, 4 % over 1e4 ... 1e7; with 1e-5 0.01 %).
    real(dp), parameter :: default_tolerance_fraction = 1.0e-5_dp
 
-   !> The worst penetration relative to its tolerance over the augmented passes.
+   !> The worst penetration (and elastic stick slip) relative to its tolerance over the
+   !> augmented passes.
    type :: penetration_check_t
-      logical :: within = .true.        !! every active node's penetration within its tolerance
-      real(dp) :: penetration = 0.0_dp  !! the largest ratio's penetration -g (length)
+      logical :: within = .true.        !! every active node's penetration (slip) within its tolerance
+      real(dp) :: penetration = 0.0_dp  !! the largest ratio's penetration -g or elastic slip (length)
       real(dp) :: tolerance = 0.0_dp    !! its pass's tolerance (length)
       integer :: node = 0               !! its slave node (internal number), 0: none active
       integer :: n_over = 0             !! active nodes beyond their tolerance
+      logical :: slip = .false.         !! the worst is an elastic stick slip
    end type penetration_check_t
 
 contains
@@ -61,38 +68,74 @@ contains
 
    !> The penetrations of the active slave nodes of the augmented passes at the last
    !> evaluation, against each pass's tolerance (given, or default_tolerance_fraction times
-   !> its master's mean face size).
+   !> its master's mean face size), and with augmented friction the elastic slips
+   !> |t - (I - n n) lambda_T| / eps_T of the sticking nodes against the stick tolerance (the
+   !> same default).
    function check_penetrations(model, system) result(check)
       type(model_t), intent(in) :: model
       type(contact_system_t), intent(in) :: system
       type(penetration_check_t) :: check
       type(augmentation_t) :: settings
-      real(dp) :: tolerance, worst
+      real(dp) :: tolerance, stick_tolerance, worst
       integer :: p, i
       worst = 0.0_dp
       do p = 1, size(system%passes)
          settings = pass_augmentation(model, system, p)
          if (.not. settings%augmented) cycle
-         associate (pass => system%passes(p))
+         associate (pass => system%passes(p), parameters => model%contact_pairs(system%passes(p)%pair)%parameters)
             tolerance = settings%penetration_tolerance
-            if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*pass%face_size
+            if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*surface_size(pass)
+            stick_tolerance = parameters%stick_tolerance
+            if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
             do i = 1, size(pass%slave_nodes)
                if (pass%result(i)%status == contact_open) cycle
-               if (-pass%result(i)%gap <= tolerance) cycle
-               check%within = .false.
-               check%n_over = check%n_over + 1
-               if (-pass%result(i)%gap/tolerance <= worst) cycle
-               worst = -pass%result(i)%gap/tolerance
-               check%penetration = -pass%result(i)%gap
-               check%tolerance = tolerance
-               check%node = pass%slave_nodes(i)
+               call compare(pass%slave_nodes(i), -pass%result(i)%gap, tolerance, .false.)
+               if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
+                  call compare(pass%slave_nodes(i), elastic_slip(pass, i, parameters%tangential_penalty), &
+                               stick_tolerance, .true.)
             end do
          end associate
       end do
+   contains
+      subroutine compare(node, value, limit, slip)
+         integer, intent(in) :: node
+         real(dp), intent(in) :: value, limit
+         logical, intent(in) :: slip
+         if (value <= limit) return
+         check%within = .false.
+         check%n_over = check%n_over + 1
+         if (value/limit <= worst) return
+         worst = value/limit
+         check%penetration = value
+         check%tolerance = limit
+         check%node = node
+         check%slip = slip
+      end subroutine compare
    end function check_penetrations
 
+   !> The size the default tolerances scale with (length): the master's mean face size, or
+   !> against a rigid plane the square root of the slave nodes' mean tributary area.
+   pure real(dp) function surface_size(pass)
+      type(contact_pass_t), intent(in) :: pass
+      surface_size = pass%face_size
+      if (pass%rigid .and. size(pass%area) > 0) surface_size = sqrt(sum(pass%area)/size(pass%area))
+   end function surface_size
+
+   !> |t - (I - n n) lambda_T| / eps_T of slave i (length): the elastic slip of a sticking node.
+   pure real(dp) function elastic_slip(pass, i, tangential_penalty)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: i
+      real(dp), intent(in) :: tangential_penalty
+      real(dp) :: lambda(3), normal(3)
+      normal = pass%result(i)%normal
+      lambda = pass%tangential_multiplier(:, i)
+      lambda = lambda - dot_product(lambda, normal)*normal
+      elastic_slip = norm2(pass%result(i)%traction - lambda)/tangential_penalty
+   end function elastic_slip
+
    !> Uzawa's update of every augmented pass: lambda <- p_N of the last evaluation (0 for an
-   !> open node). Returns the largest change of a multiplier (force/area).
+   !> open node), with augmented friction lambda_T <- t. Returns the largest change of a normal
+   !> multiplier (force/area).
    real(dp) function augment_multipliers(model, system) result(largest_change)
       type(model_t), intent(in) :: model
       type(contact_system_t), intent(inout) :: system
@@ -108,6 +151,12 @@ contains
                updated = merge(pass%result(i)%pressure, 0.0_dp, pass%result(i)%status /= contact_open)
                largest_change = max(largest_change, abs(updated - pass%multiplier(i)))
                pass%multiplier(i) = updated
+               if (.not. model%contact_pairs(pass%pair)%parameters%tangential_augmented) cycle
+               if (pass%result(i)%status == contact_open) then
+                  pass%tangential_multiplier(:, i) = 0.0_dp
+               else
+                  pass%tangential_multiplier(:, i) = pass%result(i)%traction
+               end if
             end do
          end associate
       end do
@@ -119,6 +168,7 @@ contains
       integer :: p
       do p = 1, size(system%passes)
          system%passes(p)%multiplier = system%passes(p)%committed_multiplier
+         system%passes(p)%tangential_multiplier = system%passes(p)%committed_tangential_multiplier
       end do
    end subroutine restore_multipliers
 end module frix_contact_augmentation

@@ -25,6 +25,8 @@ module frix_increment_results
       real(dp), allocatable :: history(:, :) !! the pass's slip history, as restart reads it
       !> the multipliers of an augmented pass (force/area; restart data), unallocated otherwise
       real(dp), allocatable :: multiplier(:)
+      !> the tangential multipliers (3, n) of a pass with augmented friction, unallocated otherwise
+      real(dp), allocatable :: tangential_multiplier(:, :)
    end type contact_pass_results_t
 
    type :: increment_results_t

@@ -120,7 +120,7 @@ contains
    !> face (on an edge or a corner) and the face normal there are used.
    subroutine node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
                                 result, fint, tangent, x_anchor_face, branch, friction_scale, x_ring, patch_faces, &
-                                multiplier)
+                                multiplier, tangential_multiplier)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)      !! current slave position X + u
       real(dp), intent(in) :: x_master(3, 4)  !! current master face nodes, outward (HEX8 face) order
@@ -150,6 +150,9 @@ contains
       integer, intent(in), optional :: patch_faces(:, :)
       !> the node's Lagrange multiplier lambda for the normal law (force/area; default 0)
       real(dp), intent(in), optional :: multiplier
+      !> augmented friction: the node's tangential multiplier lambda_T (force/area, global
+      !> components; its part in the tangent plane counts); absent: the penalty's trial
+      real(dp), intent(in), optional :: tangential_multiplier(3)
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
       type(dual_t) :: xr(3, max_ring_nodes), nodal(3, 4), residual(2)
@@ -274,10 +277,11 @@ contains
          if (.not. has_anchor) anchor_point = xs - gap*normal   ! the foot: g_T = 0 identically
          relative = xs - anchor_point
          call friction_response(parameters, relative, normal, pressure, used_branch, traction, slipping, &
-                                result%law_status, friction_scale)
+                                result%law_status, friction_scale, tangential_multiplier)
          if (slipping) then
             result%status = contact_slip
-            target = x_slave - result%gap*result%normal + traction%value/parameters%tangential_penalty
+            target = x_slave - result%gap*result%normal + &
+                     (traction%value - tangential_part(tangential_multiplier, result%normal))/parameters%tangential_penalty
             call project_onto_face(x_master, target, result%new_anchor_xi, converged, initial_xi=result%xi)
             if (.not. converged) result%new_anchor_xi = result%xi
          else
@@ -310,7 +314,7 @@ contains
    !> fint = -A_s (p_N n + t) and tangent = d fint / d u_s (3 x 3). For an open node the new
    !> anchor is the foot point.
    subroutine node_plane_contact(parameters, x_slave, plane_point, plane_normal, area, anchor, has_anchor, &
-                                 result, fint, tangent, branch, friction_scale, multiplier)
+                                 result, fint, tangent, branch, friction_scale, multiplier, tangential_multiplier)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)       !! current slave position X + u
       real(dp), intent(in) :: plane_point(3)   !! a point P of the plane
@@ -324,6 +328,7 @@ contains
       integer, intent(in), optional :: branch  !! friction branch, as for node_face_contact
       real(dp), intent(in), optional :: friction_scale  !! as for node_face_contact
       real(dp), intent(in), optional :: multiplier      !! as for node_face_contact
+      real(dp), intent(in), optional :: tangential_multiplier(3)  !! as for node_face_contact
       type(dual_t) :: xs(3), gap, pressure, relative(3), traction(3), force(3)
       real(dp) :: normal(3), foot(3), used_anchor(3), lambda
       logical :: slipping
@@ -361,10 +366,11 @@ contains
             relative = gap*normal   ! anchor at the foot: g_T = 0 identically
          end if
          call friction_response(parameters, relative, dual_constant(normal), pressure, used_branch, traction, &
-                                slipping, result%law_status, friction_scale)
+                                slipping, result%law_status, friction_scale, tangential_multiplier)
          if (slipping) then
             result%status = contact_slip
-            result%new_anchor = foot + traction%value/parameters%tangential_penalty
+            result%new_anchor = foot + (traction%value - tangential_part(tangential_multiplier, normal))/ &
+                                parameters%tangential_penalty
          else
             result%status = contact_stick
             result%new_anchor = used_anchor
@@ -382,10 +388,10 @@ contains
    end subroutine node_plane_contact
 
    !> Trial traction t_trial = -eps_T (I - n n) g_rel (g_rel: slave position relative to the
-   !> anchor; force/area) and its return mapping on friction branch `branch`: the traction,
+   !> anchor; force/area), plus (I - n n) lambda_T with augmented friction, and its return mapping on friction branch `branch`: the traction,
    !> whether the slip branch was evaluated, and the status the law itself chooses.
    pure subroutine friction_response(parameters, relative, normal, pressure, branch, traction, slipping, &
-                                     law_status, friction_scale)
+                                     law_status, friction_scale, tangential_multiplier)
       type(contact_parameters_t), intent(in) :: parameters
       type(dual_t), intent(in) :: relative(3), normal(3), pressure
       integer, intent(in) :: branch
@@ -393,12 +399,19 @@ contains
       logical, intent(out) :: slipping
       integer, intent(out) :: law_status
       real(dp), intent(in), optional :: friction_scale  !! as for node_face_contact
-      type(dual_t) :: trial(3)
+      !> augmented friction: the node's tangential multiplier lambda_T (force/area), whose part
+      !> in the tangent plane is added to the trial traction
+      real(dp), intent(in), optional :: tangential_multiplier(3)
+      type(dual_t) :: trial(3), lambda(3)
       logical :: law_slipping
       real(dp) :: scale
       scale = 1.0_dp
       if (present(friction_scale)) scale = friction_scale
       trial = (-parameters%tangential_penalty)*(relative - dual_dot(relative, normal)*normal)
+      if (present(tangential_multiplier)) then
+         lambda = dual_constant(tangential_multiplier)
+         trial = trial + (lambda - dual_dot(lambda, normal)*normal)
+      end if
       call parameters%friction%return_map(trial, scale*pressure, branch, traction, slipping, law_slipping)
       law_status = merge(contact_slip, contact_stick, law_slipping)
    end subroutine friction_response
@@ -589,6 +602,18 @@ contains
          previous_step = maxval(abs(step))
       end do
    end subroutine smooth_projection
+
+   !> (I - n n) lambda_T, the tangent-plane part of a tangential multiplier (0 when absent):
+   !> with augmented friction the anchor of a slipping node is where the trial traction
+   !> lambda_T - eps_T g_T equals the returned traction t, g_T = (lambda_T - t) / eps_T.
+   pure function tangential_part(tangential_multiplier, normal) result(part)
+      real(dp), intent(in), optional :: tangential_multiplier(3)
+      real(dp), intent(in) :: normal(3)
+      real(dp) :: part(3)
+      part = 0.0_dp
+      if (present(tangential_multiplier)) &
+         part = tangential_multiplier - dot_product(tangential_multiplier, normal)*normal
+   end function tangential_part
 
    pure function unit(vector) result(direction)
       real(dp), intent(in) :: vector(3)

@@ -38,6 +38,12 @@ module frix_contact_parameters
       !> .true.: a pair with friction created without EPST; eps_T is then set to the pair's eps_N
       !> by the deck reader (0 until then) and this stays .true. to say where the value came from
       logical :: automatic_tangential_penalty = .false.
+      !> TMETHOD Augmented: the stick traction is augmented too, with a tangential multiplier
+      !> per slave node (frix_contact_augmentation), until every sticking node's elastic slip
+      !> |t - lambda_T| / eps_T is below `stick_tolerance` (length; < 0: the default, the
+      !> penetration tolerance's rule); needs an augmented normal law
+      logical :: tangential_augmented = .false.
+      real(dp) :: stick_tolerance = -1.0_dp
       !> Search band (length): the contact search keeps slave/master candidates whose gap is
       !> below this, so that a node about to close is tracked; it does NOT activate contact,
       !> which the normal law decides (penalty: g < 0). CARAT's "gap tolerance" (1e-4 in

@@ -64,6 +64,9 @@ module frix_contact_pass
       !> an estimate of p_N; 0 and unused by the penalty law): the current one, changed only
       !> by augmentations (frix_contact_augmentation), and the last converged increment's
       real(dp), allocatable :: multiplier(:), committed_multiplier(:)
+      !> with augmented friction: the tangential multiplier lambda_T of each slave node (3, n:
+      !> force/area, global components), current and committed, as `multiplier`
+      real(dp), allocatable :: tangential_multiplier(:, :), committed_tangential_multiplier(:, :)
    end type contact_pass_t
 
 contains
@@ -133,6 +136,8 @@ contains
       allocate (pass%result(n_slave))
       allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
                 pass%multiplier(n_slave), pass%committed_multiplier(n_slave), source=0.0_dp)
+      allocate (pass%tangential_multiplier(3, n_slave), pass%committed_tangential_multiplier(3, n_slave), &
+                source=0.0_dp)
       allocate (pass%has_anchor(n_slave), source=.false.)
    end subroutine start_pass_state
 

@@ -7,7 +7,7 @@ module frix_deck_contact
    use frix_error, only: error_t
    use frix_strings, only: to_string, to_upper
    use frix_friction_law, only: friction_law_t
-   use frix_normal_contact_law, only: normal_contact_law_t
+   use frix_normal_contact_law, only: normal_contact_law_t, augmentation_t
    use frix_property_list, only: property_list_t, property_spec_t, joined, spec_names, keyword_index
    use frix_friction_law_registry, only: create_pair_friction_law, friction_property_specs, default_friction_law
    use frix_normal_contact_law_registry, only: create_normal_contact_law, normal_property_specs, &
@@ -48,6 +48,10 @@ module frix_deck_contact
       real(dp) :: gap_tolerance = 0.0_dp
       integer :: passes = 1
       logical :: has_eps_t = .false., has_point = .false., has_normal = .false.
+      logical :: tangential_augmented = .false.   !! TMETHOD Augmented
+      integer :: tmethod_token = 0           !! token of TMETHOD's value, 0 if not given
+      real(dp) :: stick_tolerance = -1.0_dp  !! STICKTOL (length), < 0 if not given
+      integer :: stick_token = 0             !! token of STICKTOL's value, 0 if not given
    end type pair_options_t
 
 contains
@@ -234,6 +238,12 @@ contains
          case ('METHOD')
             options%method_token = position
             call reader%take_word(line, position, 'a normal contact method', options%method, ok)
+         case ('TMETHOD')
+            call read_tangential_method(reader, line, position, options, ok)
+         case ('STICKTOL')
+            options%stick_token = position
+            call reader%take_real(line, position, 'STICKTOL', options%stick_tolerance, ok)
+            call require(reader, ok, options%stick_tolerance > 0.0_dp, line, position - 1, 'STICKTOL must be positive')
          case ('LAW')
             options%law_token = position
             call reader%take_word(line, position, 'a friction law', options%law, ok)
@@ -258,11 +268,47 @@ contains
             call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
                                joined(spec_names(normal_specs))//', EPST, PENALTY_FACTOR, '// &
                                joined(spec_names(friction_specs))// &
-                               ', METHOD, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
+                               ', METHOD, TMETHOD, STICKTOL, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
             ok = .false.
          end select
       end do
    end subroutine read_pair_options
+
+   !> `TMETHOD Penalty|Augmented` (after TMETHOD): how the stick traction is enforced.
+   subroutine read_tangential_method(reader, line, position, options, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      type(pair_options_t), intent(inout) :: options
+      logical, intent(inout) :: ok
+      integer :: choice
+      options%tmethod_token = position
+      call reader%take_choice(line, position, 'Penalty or Augmented', [character(len=9) :: 'PENALTY', 'AUGMENTED'], &
+                              'TMETHOD must be Penalty or Augmented', choice, ok)
+      options%tangential_augmented = choice == 2
+   end subroutine read_tangential_method
+
+   !> Augmented friction (TMETHOD Augmented, STICKTOL) needs friction and an augmented normal
+   !> law (the augmentations are driven by the pair's MAXAUG); STICKTOL belongs to it.
+   subroutine set_tangential_method(reader, line, options, pair, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      type(pair_options_t), intent(in) :: options
+      type(contact_pair_t), intent(inout) :: pair
+      logical, intent(inout) :: ok
+      type(augmentation_t) :: settings
+      if (options%stick_token > 0) &
+         call require(reader, ok, options%tangential_augmented, line, options%stick_token - 1, &
+                      'STICKTOL belongs to TMETHOD Augmented')
+      if (.not. (ok .and. options%tangential_augmented)) return
+      settings = pair%parameters%normal%augmentation()
+      call require(reader, ok, settings%augmented, line, options%tmethod_token, &
+                   'TMETHOD Augmented needs METHOD Augmented')
+      call require(reader, ok, .not. pair%parameters%friction%frictionless(), line, options%tmethod_token, &
+                   'TMETHOD Augmented needs friction (MU > 0)')
+      pair%parameters%tangential_augmented = ok
+      pair%parameters%stick_tolerance = options%stick_tolerance
+   end subroutine set_tangential_method
 
    !> `NORMALS Facet|Smoothed|Auto` (after NORMALS); Smoothed and Auto need a deformable master.
    subroutine read_normals(reader, line, position, options, ok)
@@ -335,6 +381,7 @@ contains
       if (ok .and. options%factor_token > 0) &
          call require(reader, ok, pair%parameters%normal%automatic_penalty, line, options%factor_token - 1, &
                       'PENALTY_FACTOR belongs to an automatic EPSN (a pair without EPSN)')
+      if (ok) call set_tangential_method(reader, line, options, pair, ok)
       pair%penalty_factor = options%penalty_factor
       if (ok) call set_normals(reader, model, line, options, pair, ok)
    end subroutine make_pair_parameters

@@ -66,7 +66,8 @@ contains
       check = check_penetrations(model, state%contact)
       if (.not. check%within .and. .not. context%quiet) &
          write (*, '(2x,a)') 'augmentation limit ('//to_string(limit)//') reached: '// &
-            to_string(check%n_over)//' nodes beyond the penetration tolerance, largest '// &
+            to_string(check%n_over)//' nodes beyond the tolerance, largest '// &
+            trim(merge('stick slip ', 'penetration', check%slip))//' '// &
             to_string(check%penetration)//' (tolerance '//to_string(check%tolerance)//') at node '// &
             to_string(model%mesh%node_ids(check%node))//'; the increment is accepted'
    end subroutine solve_augmented
@@ -80,7 +81,8 @@ contains
       real(dp), intent(in) :: change
       if (context%quiet) return
       write (*, '(2x,a)') 'augmentation '//to_string(k)//': '//to_string(check%n_over)// &
-         ' nodes beyond the penetration tolerance, largest '//to_string(check%penetration)// &
+         ' nodes beyond the tolerance, largest '//trim(merge('stick slip ', 'penetration', check%slip))// &
+         ' '//to_string(check%penetration)// &
          ' (tolerance '//to_string(check%tolerance)//') at node '//to_string(model%mesh%node_ids(check%node))// &
          '; largest multiplier change '//to_string(change)
    end subroutine print_augmentation

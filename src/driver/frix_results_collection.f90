@@ -170,6 +170,10 @@ contains
             table%pair_id = model%contact_pairs(pair)%id
             call get_contact_history(state%contact, p, table%history)
             if (augmented_pass(model, pair)) table%multiplier = state%contact%passes(p)%committed_multiplier
+            if (augmented_pass(model, pair)) then
+               if (model%contact_pairs(pair)%parameters%tangential_augmented) &
+                  table%tangential_multiplier = state%contact%passes(p)%committed_tangential_multiplier
+            end if
             call check_contact_finite(model, results, table, error)
             if (allocated(error)) return
          end associate

@@ -233,6 +233,9 @@ contains
             call self%hdf5%add_contact_array('pass'//to_string(p)//'_history', results%contact(p)%history)
             if (allocated(results%contact(p)%multiplier)) &
                call self%hdf5%add_contact_array('pass'//to_string(p)//'_multiplier', results%contact(p)%multiplier)
+            if (allocated(results%contact(p)%tangential_multiplier)) &
+               call self%hdf5%add_contact_array('pass'//to_string(p)//'_tangential_multiplier', &
+                                                results%contact(p)%tangential_multiplier)
          end do
       end if
       do f = 1, size(results%point_fields)

@@ -58,6 +58,16 @@ contains
             end if
             pass%multiplier = values(1, :)
             pass%committed_multiplier = values(1, :)
+            if (.not. model%contact_pairs(pass%pair)%parameters%tangential_augmented) cycle
+            values = pass%tangential_multiplier
+            call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_tangential_multiplier', &
+                                      values, error)
+            if (allocated(error)) then
+               error%message = 'contact pass '//to_string(p)//': '//error%message
+               return
+            end if
+            pass%tangential_multiplier = values
+            pass%committed_tangential_multiplier = values
          end associate
       end do
    end subroutine read_state_restart

@@ -7,4 +7,9 @@ add_test(NAME contact_s4_stick
 # S4b: displacement-controlled pull, the horizontal reaction levels off at mu N = 360 (1 %).
 add_test(NAME contact_s4b_plateau
          COMMAND bash ${s4_dir}/run_check.sh ${FRIX_BIN} ${s4_inputs}/s4b_block.dck s4b)
-set_tests_properties(contact_s4_stick contact_s4b_plateau PROPERTIES LABELS "regression;contact")
+# S4 with augmented Lagrangian normal contact and friction (METHOD Augmented, TMETHOD
+# Augmented, the same EPSN 1e8 and EPST 1e4): every node sticks, and the stuck nodes no longer
+# creep by |t| / EPST (1.3e-2) but by less than the stick tolerance (docs/verification/penalty.md).
+add_test(NAME contact_s4_stick_augmented
+         COMMAND bash ${s4_dir}/run_check.sh ${FRIX_BIN} ${s4_inputs}/s4_block_augmented.dck s4 --augmented)
+set_tests_properties(contact_s4_stick contact_s4b_plateau contact_s4_stick_augmented PROPERTIES LABELS "regression;contact")

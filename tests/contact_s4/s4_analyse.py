@@ -121,7 +121,7 @@ def newton(base):
     return []
 
 
-def s4(base, check):
+def s4(base, check, augmented=False):
     listing = fr.read_listing(base + "_listing.txt")
     contact = read_contact(base)
     failures = []
@@ -155,7 +155,14 @@ def s4(base, check):
             if not 0.3 < worst < 0.99:
                 failures.append(f"step {step}: largest |t|/(mu p) = {worst}, expected about 0.7 (< 1)")
             creep = max(abs(ux[n]) for n in range(1, 22))
-            if not 1e-3 < creep < 5e-2:
+            if augmented:
+                # augmented friction (TMETHOD Augmented): the elastic stick slip is driven below
+                # the stick tolerance (default 1e-5 x 0.2 = 2e-6; measured 1.9e-6 and 1.3e-6 at
+                # the ends of steps 1 and 2): bound 1e-5, against the penalty's 1.3e-2
+                if not creep < 1e-5:
+                    failures.append(f"step {step}: largest interface |u_x| = {creep}, expected < 1e-5 "
+                                    "(augmented friction)")
+            elif not 1e-3 < creep < 5e-2:
                 failures.append(f"step {step}: largest interface |u_x| = {creep}, expected ~1e-2")
     return failures
 
@@ -168,7 +175,10 @@ def main(argv):
         s4b(argv[1], False, argv[2])
         return 0
     check = "--check" in argv
-    failures = {"s4": s4, "s4b": s4b}.get(argv[0], lambda b, c: newton(b))(argv[1], check)
+    if argv[0] == "s4" and "--augmented" in argv:
+        failures = s4(argv[1], check, augmented=True)
+    else:
+        failures = {"s4": s4, "s4b": s4b}.get(argv[0], lambda b, c: newton(b))(argv[1], check)
     for failure in failures:
         print("FAIL:", failure)
     if check:

@@ -4,7 +4,8 @@
 # the HDF5 file's contact group, so the restarted run must end at the uninterrupted one's state
 # to 1e-10 relative: displacements, contact tractions and accumulated slip (without the slip
 # history the restarted run would start from reference anchors with zero slip and differ; with
-# METHOD Augmented also the multipliers, contact/pass1_multiplier).
+# METHOD Augmented also the multipliers, contact/pass1_multiplier and, with TMETHOD Augmented,
+# contact/pass1_tangential_multiplier).
 set -eu
 frix=$1; deck=$2
 name=$(basename "$deck" .dck)
@@ -18,7 +19,7 @@ def last(path):
     with h5py.File(path, 'r') as f:
         g = f['increments'][sorted(f['increments'])[-1]]
         keys = ['displacement', 'contact/traction', 'contact/slip', 'contact/pressure']
-        keys += [k for k in ('contact/pass1_multiplier',) if k in g]
+        keys += [k for k in ('contact/pass1_multiplier', 'contact/pass1_tangential_multiplier') if k in g]
         return {k: g[k][...] for k in keys}
 ref, got = last(f"{out}/full/{name}.h5"), last(f"{out}/restarted/{name}.h5")
 fail = 0
