@@ -183,7 +183,7 @@ contains
    !> differs from `expected_status` at the base point or at any perturbed point (the
    !> difference must not cross a branch).
    subroutine check_face_tangent(error, parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                 expected_status, tangent, x_anchor_face, x_ring, patch_faces)
+                                 expected_status, tangent, x_anchor_face, x_ring, patch_faces, tangential_multiplier)
       type(error_t), allocatable, intent(out) :: error
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3), x_master(3, 4), area, anchor_xi(2)
@@ -194,6 +194,7 @@ contains
       real(dp), intent(in), optional :: x_anchor_face(3, 4)
       real(dp), intent(in), optional :: x_ring(:, :)
       integer, intent(in), optional :: patch_faces(:, :)
+      real(dp), intent(in), optional :: tangential_multiplier(3)   !! augmented friction's lambda_T
       type(contact_point_result_t) :: base, plus, minus
       real(dp), allocatable :: q(:), qp(:), fint(:), f_plus(:), f_minus(:), k_other(:, :), column(:)
       real(dp) :: h, scale, worst
@@ -248,25 +249,26 @@ contains
          if (present(x_ring)) ring = reshape(unknowns(ring_first:), [3, size(x_ring, 2)])
          call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
                                 has_anchor, clamp, result, force, stiffness, x_anchor_face=anchor_face, &
-                                x_ring=ring, patch_faces=patch_faces)
+                                x_ring=ring, patch_faces=patch_faces, tangential_multiplier=tangential_multiplier)
       end subroutine evaluate
    end subroutine check_face_tangent
 
    !> Tangent of node_plane_contact against central differences (3 unknowns), same rules.
    subroutine check_plane_tangent(error, parameters, x_slave, plane_point, plane_normal, area, anchor, &
-                                  expected_status, tangent)
+                                  expected_status, tangent, tangential_multiplier)
       type(error_t), allocatable, intent(out) :: error
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3), plane_point(3), plane_normal(3), area, anchor(3)
       integer, intent(in) :: expected_status
       real(dp), intent(out) :: tangent(3, 3)
+      real(dp), intent(in), optional :: tangential_multiplier(3)   !! augmented friction's lambda_T
       type(contact_point_result_t) :: base, plus, minus
       real(dp) :: xp(3), fint(3), f_plus(3), f_minus(3), k_other(3, 3), column(3), h, worst
       integer :: j
 
       h = relative_step*max(1.0_dp, maxval(abs(x_slave)))
       call node_plane_contact(parameters, x_slave, plane_point, plane_normal, area, anchor, .true., base, &
-                              fint, tangent)
+                              fint, tangent, tangential_multiplier=tangential_multiplier)
       if (base%status /= expected_status) then
          call fatal_error(error, 'status '//to_string(base%status)//', expected '//to_string(expected_status))
          return
@@ -276,10 +278,10 @@ contains
          xp = x_slave
          xp(j) = x_slave(j) + h
          call node_plane_contact(parameters, xp, plane_point, plane_normal, area, anchor, .true., plus, &
-                                 f_plus, k_other)
+                                 f_plus, k_other, tangential_multiplier=tangential_multiplier)
          xp(j) = x_slave(j) - h
          call node_plane_contact(parameters, xp, plane_point, plane_normal, area, anchor, .true., minus, &
-                                 f_minus, k_other)
+                                 f_minus, k_other, tangential_multiplier=tangential_multiplier)
          if (plus%status /= expected_status .or. minus%status /= expected_status) then
             call fatal_error(error, 'the difference of unknown '//to_string(j)//' crosses a branch')
             return

@@ -58,8 +58,25 @@ contains
                new_unittest('smoothed normals, projection beyond the face, facet point inside: clamped', &
                             test_smoothed_facet_inside), &
                new_unittest('rigid plane, stick (symmetric)', test_plane_stick), &
-               new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip)]
+               new_unittest('rigid plane, slip (unsymmetric)', test_plane_slip), &
+               new_unittest('augmented friction: tangential multiplier, stick and slip', test_tangential_multiplier), &
+               new_unittest('augmented friction, rigid plane: stick and slip', test_plane_tangential_multiplier)]
    end subroutine collect_contact_tangent
+
+   !> A tangential multiplier lambda_T (with a normal component, which the kernel drops) in the
+   !> trial traction: the tangent still equals the differences of fint, stick and slip.
+   subroutine test_tangential_multiplier(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      real(dp), parameter :: lambda(3) = [3.0e2_dp, -2.0e2_dp, 5.0e1_dp]
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.2_dp, -0.3_dp], depth), &
+                              warped_face, area, [0.205_dp, -0.305_dp], .true., .false., contact_stick, tangent, &
+                              tangential_multiplier=0.01_dp*lambda)
+      if (allocated(error)) return
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [0.2_dp, -0.3_dp], depth), &
+                              warped_face, area, [0.205_dp, -0.305_dp], .true., .false., contact_slip, tangent, &
+                              tangential_multiplier=lambda)
+   end subroutine test_tangential_multiplier
 
    subroutine test_open(error)
       type(error_t), allocatable, intent(out) :: error
@@ -337,6 +354,20 @@ contains
       if (allocated(error)) return
       call check(error, asymmetry(tangent) < 1.0e-14_dp, 'stick tangent on a plane should be symmetric')
    end subroutine test_plane_stick
+
+   subroutine test_plane_tangential_multiplier(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(3, 3), normal(3), slave(3), anchor(3)
+      real(dp), parameter :: lambda(3) = [3.0e2_dp, -2.0e2_dp, 5.0e1_dp]
+      normal = plane_normal/norm2(plane_normal)
+      slave = plane_point + [0.4_dp, 0.3_dp, 0.0_dp] - depth*normal
+      anchor = slave + [0.01_dp, -0.005_dp, 0.0_dp]
+      call check_plane_tangent(error, make_parameters(mu), slave, plane_point, plane_normal, area, anchor, &
+                               contact_stick, tangent, tangential_multiplier=0.01_dp*lambda)
+      if (allocated(error)) return
+      call check_plane_tangent(error, make_parameters(mu), slave, plane_point, plane_normal, area, anchor, &
+                               contact_slip, tangent, tangential_multiplier=lambda)
+   end subroutine test_plane_tangential_multiplier
 
    subroutine test_plane_slip(error)
       type(error_t), allocatable, intent(out) :: error
