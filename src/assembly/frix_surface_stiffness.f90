@@ -41,15 +41,33 @@ contains
       type(model_t), intent(in) :: model
       integer, intent(in) :: element   !! internal element number
       integer, intent(in) :: face      !! local face number
-      real(dp) :: coords(3, 8), weights(8), area_weights(4), volume, area
+      real(dp) :: coords(3, 8), weights(8), area_weights(4), volume, area, scale, modulus, ratio
       integer :: block
       block = model%mesh%element_block(element)
       coords = model%mesh%coords(:, model%mesh%connectivity(:, element))
+      ! A/V from the element scaled to unit size (no overflow or underflow for any finite
+      ! coordinates), then A/V = (A'/V') / scale; a degenerate element gives 0, a value beyond
+      ! the range of reals huge(): the caller reports either
+      stiffness = 0.0_dp
+      scale = maxval(abs(coords))
+      if (.not. (scale > 0.0_dp .and. scale <= huge(1.0_dp))) return
+      coords = coords/scale
       call model%blocks(block)%element%formulation%volume_weights(coords, weights)
       volume = sum(weights)
       call face_area_weights(coords(:, hex8_face_nodes(:, face)), area_weights)
       area = sum(area_weights)
-      stiffness = representative_modulus(model%materials(model%blocks(block)%material)%law)*area/volume
+      if (.not. (volume > 0.0_dp .and. area > 0.0_dp)) return
+      ratio = area/volume
+      modulus = representative_modulus(model%materials(model%blocks(block)%material)%law)
+      if (.not. (modulus > 0.0_dp .and. modulus <= huge(1.0_dp))) return
+      ! M A/V = M (A'/V') / scale overflows only where (A'/V') / scale > 1 and M beyond huge / that
+      if (ratio > scale) then
+         if (modulus > huge(1.0_dp)/(ratio/scale)) then
+            stiffness = huge(1.0_dp)
+            return
+         end if
+      end if
+      stiffness = modulus*(ratio/scale)
    end function face_stiffness
 
    !> Mean of M/h over the faces of surface `surface` (index into model%mesh%surfaces); 0 for a

@@ -15,7 +15,7 @@ module frix_contact_patches
    use frix_strings, only: to_string
    use frix_kinds, only: dp
    use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
-   use frix_face_projection, only: face_normal
+   use frix_vector_algebra, only: cross_product
    use frix_contact_kernel, only: max_ring_nodes
    implicit none
    private
@@ -67,7 +67,7 @@ contains
       call faces_around_nodes(size(coords, 2), faces, node_start, node_faces)
       allocate (centre_normal(3, n_faces))
       do f = 1, n_faces
-         centre_normal(:, f) = face_normal(coords(:, faces(:, f)), [0.0_dp, 0.0_dp])
+         centre_normal(:, f) = face_centre_normal(coords(:, faces(:, f)))
       end do
       allocate (patches%ring_start(n_faces + 1), patches%patch_start(n_faces + 1))
       allocate (patches%ring_nodes(max(1, max_ring_nodes*n_faces)), patches%patch_faces(4, max(1, 9*n_faces)))
@@ -97,7 +97,7 @@ contains
       call faces_around_nodes(size(coords, 2), faces, node_start, node_faces)
       allocate (centre_normal(3, size(faces, 2)))
       do f = 1, size(faces, 2)
-         centre_normal(:, f) = face_normal(coords(:, faces(:, f)), [0.0_dp, 0.0_dp])
+         centre_normal(:, f) = face_centre_normal(coords(:, faces(:, f)))
       end do
       curved = .false.
       do f = 1, size(faces, 2)
@@ -108,6 +108,25 @@ contains
          if (curved) return
       end do
    end function surface_is_curved
+
+   !> The unit normal at the centre of a face (HEX8 face order: outward), computed on the face
+   !> scaled to unit size, so that no finite coordinates overflow or underflow; zero for a
+   !> degenerate face (zero area), which then is within no feature angle of another.
+   pure function face_centre_normal(x_face) result(normal)
+      real(dp), intent(in) :: x_face(3, 4)
+      real(dp) :: normal(3), scaled(3, 4), scale, length
+      normal = 0.0_dp
+      scale = maxval(abs(x_face))
+      if (.not. (scale > 0.0_dp .and. scale <= huge(1.0_dp))) return
+      scaled = x_face/scale
+      normal = cross_product(0.5_dp*(scaled(:, 3) - scaled(:, 1)), 0.5_dp*(scaled(:, 4) - scaled(:, 2)))
+      length = norm2(normal)
+      if (length > 0.0_dp) then
+         normal = normal/length
+      else
+         normal = 0.0_dp
+      end if
+   end function face_centre_normal
 
    !> Whether each unit normal normals(:, k) makes an angle of at most feature_angle (degrees)
    !> with the unit normal `own`: acos(own . n) <= feature_angle (the cosine clamped to [-1, 1]).

@@ -8,7 +8,7 @@ module frix_results_output
    use frix_version_info, only: frix_version
    use frix_error, only: error_t, fatal_error
    use frix_model, only: model_t
-   use frix_increment_results, only: increment_results_t, named_field_t
+   use frix_increment_results, only: increment_results_t, contact_pass_results_t, named_field_t
    use frix_field_recovery, only: nodal_extrapolated, cell_average
    use frix_listing_writer, only: listing_t
    use frix_vtk_writer, only: vtk_series_t
@@ -170,10 +170,33 @@ contains
             call self%listing%write_table('CONTACT PAIR '//to_string(table%pair_id)//' PASS '//to_string(p), &
                                           'NODE', contact_table_labels, model%mesh%node_ids(table%nodes), &
                                           table%values, error)
+            if (.not. allocated(error) .and. allocated(table%multiplier)) &
+               call write_multipliers(self, model, table, p, error)
          end associate
          if (allocated(error)) return
       end do
    end subroutine write_listing
+
+   !> An augmented pass's committed multipliers: `CONTACT MULTIPLIERS PAIR <id> PASS <p>`, a row
+   !> per slave node: LAMBDA (normal, force/area) and, with augmented friction, LAMBDA_T_X Y Z.
+   subroutine write_multipliers(self, model, table, p, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(contact_pass_results_t), intent(in) :: table
+      integer, intent(in) :: p
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: labels(4) = [character(len=10) :: 'LAMBDA', 'LAMBDA_T_X', 'LAMBDA_T_Y', &
+                                                                  'LAMBDA_T_Z']
+      real(dp), allocatable :: values(:, :)
+      integer :: n
+      n = 1
+      if (allocated(table%tangential_multiplier)) n = 4
+      allocate (values(n, size(table%multiplier)))
+      values(1, :) = table%multiplier
+      if (n == 4) values(2:4, :) = table%tangential_multiplier
+      call self%listing%write_table('CONTACT MULTIPLIERS PAIR '//to_string(table%pair_id)//' PASS '//to_string(p), &
+                                    'NODE', labels(:n), model%mesh%node_ids(table%nodes), values, error)
+   end subroutine write_multipliers
 
    !> The .vtu of the increment: displacement, reaction, stress, strain, the contact fields and
    !> the materials' named history variables (extrapolated to the nodes, averaged per cell).
