@@ -20,7 +20,7 @@ module frix_contact_augmentation
    private
 
    public :: penetration_check_t, check_penetrations, augment_multipliers, restore_multipliers
-   public :: max_augmentations, default_tolerance_fraction
+   public :: max_augmentations
 
    !> Default penetration tolerance: this fraction of the master's mean face size (against a
    !> rigid plane: the square root of the slave nodes' mean tributary area) (S1: with

@@ -223,15 +223,20 @@ contains
          do i = 1, size(passes(p)%slave_nodes)
             if (passes(p)%face(i) == 0) cycle
             s = passes(p)%slave_nodes(i)
-            do c = 1, 3
-               if (.not. dependent(3*s - 3 + c)) cycle
-               if (rows) then
-                  call move_row(matrix, s, c, tie_masters(passes(p), i), tie_weights(passes(p), i), error)
-               else
-                  call move_column(matrix, s, c, tie_masters(passes(p), i), tie_weights(passes(p), i), error)
-               end if
-               if (allocated(error)) return
-            end do
+            if (.not. any(dependent(3*s - 2:3*s))) cycle
+            associate (first => passes(p)%tie%start(i) + 1, last => passes(p)%tie%start(i + 1))
+               do c = 1, 3
+                  if (.not. dependent(3*s - 3 + c)) cycle
+                  if (rows) then
+                     call move_row(matrix, s, c, passes(p)%tie%nodes(first:last), passes(p)%tie%weight(first:last), &
+                                   error)
+                  else
+                     call move_column(matrix, s, c, passes(p)%tie%nodes(first:last), &
+                                      passes(p)%tie%weight(first:last), error)
+                  end if
+                  if (allocated(error)) return
+               end do
+            end associate
          end do
       end do
    end subroutine move_dependent

@@ -65,10 +65,7 @@ contains
       integer :: n_faces, f
       n_faces = size(faces, 2)
       call faces_around_nodes(size(coords, 2), faces, node_start, node_faces)
-      allocate (centre_normal(3, n_faces))
-      do f = 1, n_faces
-         centre_normal(:, f) = face_centre_normal(coords(:, faces(:, f)))
-      end do
+      centre_normal = centre_normals(coords, faces)
       allocate (patches%ring_start(n_faces + 1), patches%patch_start(n_faces + 1))
       allocate (patches%ring_nodes(max(1, max_ring_nodes*n_faces)), patches%patch_faces(4, max(1, 9*n_faces)))
       patches%ring_start(1) = 0
@@ -95,10 +92,7 @@ contains
       real(dp), allocatable :: centre_normal(:, :)
       integer :: f
       call faces_around_nodes(size(coords, 2), faces, node_start, node_faces)
-      allocate (centre_normal(3, size(faces, 2)))
-      do f = 1, size(faces, 2)
-         centre_normal(:, f) = face_centre_normal(coords(:, faces(:, f)))
-      end do
+      centre_normal = centre_normals(coords, faces)
       curved = .false.
       do f = 1, size(faces, 2)
          adjacent = adjacent_faces(faces, f, node_start, node_faces)
@@ -108,6 +102,17 @@ contains
          if (curved) return
       end do
    end function surface_is_curved
+
+   !> face_centre_normal of every face (3, n_faces).
+   pure function centre_normals(coords, faces) result(normals)
+      real(dp), intent(in) :: coords(:, :)
+      integer, intent(in) :: faces(:, :)
+      real(dp) :: normals(3, size(faces, 2))
+      integer :: f
+      do f = 1, size(faces, 2)
+         normals(:, f) = face_centre_normal(coords(:, faces(:, f)))
+      end do
+   end function centre_normals
 
    !> The unit normal at the centre of a face (HEX8 face order: outward), computed on the face
    !> scaled to unit size, so that no finite coordinates overflow or underflow; zero for a

@@ -25,6 +25,7 @@ module frix_tie_mortar
    use frix_vector_algebra, only: cross_product
    use frix_face_projection, only: face_position, face_normal, face_shape_functions, project_onto_face
    use frix_dense_algebra, only: solve_in_place
+   use frix_surface_load, only: face_area_weights
    implicit none
    private
 
@@ -58,7 +59,7 @@ module frix_tie_mortar
    real(dp), parameter :: rule_w(7) = [0.225_dp, 0.132394152788506_dp, 0.132394152788506_dp, &
                                       0.132394152788506_dp, 0.125939180544827_dp, 0.125939180544827_dp, &
                                       0.125939180544827_dp]
-   !> 3 x 3 Gauss-Legendre rule on [-1, 1] for the slave faces' own integrals.
+   !> 3 x 3 Gauss-Legendre rule on [-1, 1] for the slave faces' mass matrices.
    real(dp), parameter :: gauss_x(3) = [-0.774596669241483377_dp, 0.0_dp, 0.774596669241483377_dp]
    real(dp), parameter :: gauss_w(3) = [5.0_dp/9.0_dp, 8.0_dp/9.0_dp, 5.0_dp/9.0_dp]
 
@@ -77,7 +78,7 @@ contains
       type(triplets_t) :: m
       real(dp), allocatable :: area(:), lower(:, :), upper(:, :)
       integer, allocatable :: position_of(:)
-      real(dp) :: slave_lower(3), slave_upper(3)
+      real(dp) :: slave_lower(3), slave_upper(3), face_weights(4)
       integer :: f, g, j
       allocate (position_of(size(coords, 2)), source=0)
       do j = 1, size(slave_nodes)
@@ -91,7 +92,9 @@ contains
       end do
       allocate (m%row(256), m%node(256), m%value(256))
       do f = 1, size(slave_faces, 2)
-         call add_face_area(coords(:, slave_faces(:, f)), position_of(slave_faces(:, f)), area)
+         ! the slave nodes' tributary areas, as frix_contact_pass's set_slave_nodes takes them
+         call face_area_weights(coords(:, slave_faces(:, f)), face_weights)
+         area(position_of(slave_faces(:, f))) = area(position_of(slave_faces(:, f))) + face_weights
          slave_lower = minval(coords(:, slave_faces(:, f)), dim=2)
          slave_upper = maxval(coords(:, slave_faces(:, f)), dim=2)
          do g = 1, size(master_faces, 2)
@@ -102,22 +105,6 @@ contains
       end do
       call compress(m, area, coupling)
    end subroutine mortar_coupling
-
-   !> area(j) += int N_j dA over the slave face (3 x 3 Gauss).
-   subroutine add_face_area(x_face, rows, area)
-      real(dp), intent(in) :: x_face(3, 4)
-      integer, intent(in) :: rows(4)
-      real(dp), intent(inout) :: area(:)
-      real(dp) :: shape(4), d_xi(4), d_eta(4)
-      integer :: p, q
-      do q = 1, 3
-         do p = 1, 3
-            call face_shape_functions([gauss_x(p), gauss_x(q)], shape, d_xi, d_eta)
-            area(rows) = area(rows) + gauss_w(p)*gauss_w(q)*shape* &
-                         norm2(cross_product(matmul(x_face, d_xi), matmul(x_face, d_eta)))
-         end do
-      end do
-   end subroutine add_face_area
 
    !> The dual basis coefficients of a slave face: phi_j = sum_k c(j, k) N_k with
    !> c = D M^-1, M_jk = int N_j N_k dA, D = diag(int N_j dA) (3 x 3 Gauss: exact on a

@@ -17,10 +17,10 @@ module frix_tie_pass
    implicit none
    private
 
-   public :: setup_tie, tie_masters, tie_weights, default_tie_tolerance_factor
+   public :: setup_tie, tie_masters, tie_weights
 
-   !> Default position tolerance: this factor times the mean master face size (the size
-   !> frix_contact_pass's set_master_faces measures; pass%band is half of it).
+   !> Default position tolerance: this factor times the master's mean face size
+   !> (pass%face_size, frix_contact_pass's set_master_faces).
    real(dp), parameter :: default_tie_tolerance_factor = 0.1_dp
    !> least fraction of a slave node's area the master must cover for the node to be tied
    real(dp), parameter :: least_coverage = 0.5_dp
@@ -39,7 +39,7 @@ contains
       integer :: i, f
       pass%tied = .true.
       used_tolerance = tolerance
-      if (used_tolerance < 0.0_dp) used_tolerance = default_tie_tolerance_factor*2.0_dp*pass%band
+      if (used_tolerance < 0.0_dp) used_tolerance = default_tie_tolerance_factor*pass%face_size
       pass%band = max(pass%band, used_tolerance)
       call initial_anchors(coords, 0.0_dp, pass)
       call mortar_coupling(coords, pass%slave_nodes, slave_faces, pass%faces, used_tolerance, pass%tie)

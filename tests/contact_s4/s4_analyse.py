@@ -156,12 +156,14 @@ def s4(base, check, augmented=False):
                 failures.append(f"step {step}: largest |t|/(mu p) = {worst}, expected about 0.7 (< 1)")
             creep = max(abs(ux[n]) for n in range(1, 22))
             if augmented:
-                # augmented friction (TMETHOD Augmented): the elastic stick slip is driven below
-                # the stick tolerance (default 1e-5 x 0.2 = 2e-6; measured 1.9e-6 and 1.3e-6 at
-                # the ends of steps 1 and 2): bound 1e-5, against the penalty's 1.3e-2
-                if not creep < 1e-5:
-                    failures.append(f"step {step}: largest interface |u_x| = {creep}, expected < 1e-5 "
-                                    "(augmented friction)")
+                # augmented friction (TMETHOD Augmented): the elastic stick slip, which is a stuck
+                # node's u_x here (anchors at x, rigid base), is driven below the stick tolerance,
+                # default 1e-5 x sqrt(mean tributary area) = 1e-5 sqrt(4 / 42) = 3.09e-6
+                # (frix_contact_augmentation); measured 1.9e-6 and 1.3e-6 at the ends of steps 1
+                # and 2, against the penalty's 1.3e-2. Bound: that tolerance.
+                if not creep < 3.09e-6:
+                    failures.append(f"step {step}: largest interface |u_x| = {creep}, expected < 3.09e-6 "
+                                    "(the stick tolerance of augmented friction)")
             elif not 1e-3 < creep < 5e-2:
                 failures.append(f"step {step}: largest interface |u_x| = {creep}, expected ~1e-2")
     return failures
