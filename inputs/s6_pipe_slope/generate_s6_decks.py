@@ -70,6 +70,7 @@ pipeline's operation raises). The surcharge: the seed's "1000 N/m" read as a lin
 1e-3 MN per metre of pipe spread over the strip |x| <= a_box (0.6 wide, about 2 D) above the
 pipe over 0 <= z <= 5: q = 1e-3/0.6 = 1.6667e-3 MPa.
 """
+import io
 import math
 import os
 import sys
@@ -283,30 +284,35 @@ def build(refine):
 
 
 def write_mesh(path, refine):
+    """Write the mesh (only if its text changed: a run reading it meanwhile is not disturbed)."""
     mesh, soil, pipe, surfaces, points = build(refine)
     names = [(3, "soil"), (3, "pipe")] + [(2, n) for n in surfaces] + [(0, n) for n, _ in points]
-    with open(path, "w") as out:
-        out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-        out.write("$Comments\nwritten by inputs/s6_pipe_slope/generate_s6_decks.py, refine %d\n"
-                  "$EndComments\n" % refine)
-        out.write("$PhysicalNames\n%d\n" % len(names))
-        for tag, (dim, name) in enumerate(names, start=1):
-            out.write('%d %d "%s"\n' % (dim, tag, name))
-        out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(mesh.nodes))
-        for i, (x, y, z) in enumerate(mesh.nodes, start=1):
-            out.write("%d %s %s %s\n" % (i, number(x), number(y), number(z)))
-        out.write("$EndNodes\n")
-        rows = []
-        for tag, hexes in ((1, soil), (2, pipe)):
-            rows += ["5 2 %d %d %s" % (tag, tag, " ".join(map(str, h))) for h in hexes]
-        for tag, name in enumerate(surfaces, start=3):
-            rows += ["3 2 %d %d %s" % (tag, tag, " ".join(map(str, f))) for f in surfaces[name]]
-        for tag, (name, node) in enumerate(points, start=3 + len(surfaces)):
-            rows.append("15 2 %d %d %d" % (tag, tag, node))
-        out.write("$Elements\n%d\n" % len(rows))
-        for i, row in enumerate(rows, start=1):
-            out.write("%d %s\n" % (i, row))
-        out.write("$EndElements\n")
+    out = io.StringIO()
+    out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
+    out.write("$Comments\nwritten by inputs/s6_pipe_slope/generate_s6_decks.py, refine %d\n"
+              "$EndComments\n" % refine)
+    out.write("$PhysicalNames\n%d\n" % len(names))
+    for tag, (dim, name) in enumerate(names, start=1):
+        out.write('%d %d "%s"\n' % (dim, tag, name))
+    out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(mesh.nodes))
+    for i, (x, y, z) in enumerate(mesh.nodes, start=1):
+        out.write("%d %s %s %s\n" % (i, number(x), number(y), number(z)))
+    out.write("$EndNodes\n")
+    rows = []
+    for tag, hexes in ((1, soil), (2, pipe)):
+        rows += ["5 2 %d %d %s" % (tag, tag, " ".join(map(str, h))) for h in hexes]
+    for tag, name in enumerate(surfaces, start=3):
+        rows += ["3 2 %d %d %s" % (tag, tag, " ".join(map(str, f))) for f in surfaces[name]]
+    for tag, (name, node) in enumerate(points, start=3 + len(surfaces)):
+        rows.append("15 2 %d %d %d" % (tag, tag, node))
+    out.write("$Elements\n%d\n" % len(rows))
+    for i, row in enumerate(rows, start=1):
+        out.write("%d %s\n" % (i, row))
+    out.write("$EndElements\n")
+    text = out.getvalue()
+    if not os.path.exists(path) or open(path).read() != text:
+        with open(path, "w") as f:
+            f.write(text)
     return len(mesh.nodes), len(soil), len(pipe)
 
 
@@ -424,6 +430,19 @@ def write_decks(counts):
             text += BODY.format(mesh=mesh, pair=pair, step3=STEP3.format(n3=n3),
                                 results="VTK Yes  LISTING Yes  HDF5 Yes")
             write(name, text)
+    # sensitivity to the reading of "all loads raised to 10 x": the soil's weight raised with
+    # them in step 3 (CURVE 1 to 10 at t = 3), coarse mesh, mu = 0.1 and 0.3
+    for mtext in ("0.1", "0.3"):
+        pair = "EPSN 1.0e3 EPST 1.0e2 MU %s GAPTOL 1.0e-6" % mtext
+        text = HEADER.format(title="mu = %s, soil weight also raised to 10 x in step 3." % mtext,
+                             mesh="s6_coarse.msh", counts=counts["s6_coarse.msh"],
+                             contact=pair + " (NORMALS default)", n3=18)
+        text = text.replace("the soil's\n weight held at 1 x.", "the soil's\n weight too (CURVE 1).")
+        body = BODY.format(mesh="s6_coarse.msh", pair=pair, step3=STEP3.format(n3=18),
+                           results="VTK Yes  LISTING Yes  HDF5 Yes")
+        body = body.replace("CURVE 1 POINTS 0.0 0.0  1.0 1.0  3.0 1.0              // soil weight: on in step 1, held",
+                            "CURVE 1 POINTS 0.0 0.0  1.0 1.0  2.0 1.0  3.0 10.0   // soil weight: 1 x, then 10 x")
+        write("s6_mu%s_g10" % mtext, text + body)
     # the short deck of the default test: the coarse mesh, mu = 0.3, steps 1 and 2 only (to 1 x)
     pair = "EPSN 1.0e3 EPST 1.0e2 MU 0.3 GAPTOL 1.0e-6"
     text = HEADER.format(title="mu = 0.3, steps 1 and 2 only (to 1 x: the default test).",

@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+"""Check one S6(b) run (pipe crossing a slope, docs/verification/s6.md).
+
+usage: check_s6.py OUTDIR BASE [--reference FILE] [--end T] [--plastic]
+
+Checks, each printing PASS/FAIL:
+- the run reached t = END (last row of <BASE>_history.csv; default 3, the 10 x load);
+- equilibrium (listing, SUM OF REACTIONS): at t = 1 the vertical reactions carry the soil's
+  weight, RY = 0.018 V with V the soil volume of the mesh computed exactly from the geometry by
+  inputs/s6_pipe_slope/generate_s6_decks.py (soil_volume); at t = 2 (1 x) RY = weight + the
+  surcharge's resultant q 0.3 x 5 and RX = -p 2 a L (the internal pressure on the half pipe,
+  its projection on x: 2 a L per unit pressure); relative tolerance 1e-6 (the Newton tolerance
+  is 1e-8);
+- the elastic hoop response in the open span (z = 9.5, away from the soil and the clamp): the
+  change of (crown u_y - invert u_y)/2 and of the springline u_x from t = 1 to t = 2 against
+  Lame's u_r(b) of the tube in plane strain at p = 9 (Timoshenko & Goodier ch. 4; nu = 0.3):
+  1.5912e-4, within 2 % (measured -1.0 %: the restrained pipe is not exactly in plane strain);
+- the history columns at t = 2 and, when the run goes there, at t = 3 against the frix
+  regression values in FILE (1e-6 of the largest value of the row);
+- with --plastic: at the last increment every integration point of the pipe has yielded
+  (HDF5 fields/yielded) and every pipe element's mean von Mises stress exceeds sigma_y = 420
+  (the seed: "von Mises everywhere above 420, fully plastic").
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "inputs", "s6_pipe_slope"))
+import generate_s6_decks as geo  # noqa: E402
+
+UNIT_WEIGHT = 0.018
+SURCHARGE = 1.6667e-3 * geo.A_BOX * geo.Z_CREST       # q x strip half width x length
+PRESSURE = 9.0
+
+
+def lame_ur_b(p, a, b, young, nu):
+    """u_r(b) of a tube in plane strain under internal pressure p (Timoshenko & Goodier ch. 4)."""
+    big_a = p * a * a / (b * b - a * a)
+    big_b = p * a * a * b * b / (b * b - a * a)
+    return (1 + nu) / young * ((1 - 2 * nu) * big_a * b + big_b / b)
+
+
+failures = []
+
+
+def check(ok, text):
+    print(("PASS: " if ok else "FAIL: ") + text)
+    if not ok:
+        failures.append(text)
+
+
+def reactions(listing):
+    """(RX, RY, RZ) of every SUM OF REACTIONS block of the listing, in order (one per written
+    increment: the decks write every increment)."""
+    lines = open(listing).read().splitlines()
+    return [tuple(float(v) for v in lines[i + 2].split()[1:4])
+            for i, line in enumerate(lines) if line.strip().startswith("SUM OF REACTIONS")]
+
+
+def history(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+def row_at(rows, t):
+    for r in rows:
+        if abs(float(r["time"]) - t) < 1e-9:
+            return r
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("outdir")
+    ap.add_argument("base")
+    ap.add_argument("--reference")
+    ap.add_argument("--end", type=float, default=3.0)
+    ap.add_argument("--plastic", action="store_true")
+    args = ap.parse_args()
+    out, base = args.outdir, args.base
+    rows = history(os.path.join(out, base + "_history.csv"))
+    t_last = float(rows[-1]["time"])
+    check(abs(t_last - args.end) < 1e-9, "%s reached t = %g (last t = %.6g)" % (base, args.end, t_last))
+
+    refine = 2 if "_fine" in base else 1
+    weight = UNIT_WEIGHT * geo.soil_volume(refine)
+    sums = reactions(os.path.join(out, base + "_listing.txt"))
+    times = [float(r["time"]) for r in rows]
+    by_time = dict(zip(times, sums)) if len(sums) == len(times) else {}
+    check(bool(by_time), "one SUM OF REACTIONS per history row (%d, %d)" % (len(sums), len(times)))
+    if by_time:
+        rx1, ry1, _ = by_time[1.0]
+        check(abs(ry1 - weight) <= 1e-6 * weight,
+              "t = 1: RY = %.9e, soil weight 0.018 V = %.9e (rel. %.1e)" % (ry1, weight, ry1 / weight - 1))
+        if 2.0 in by_time:
+            rx2, ry2, _ = by_time[2.0]
+            expect_rx = -PRESSURE * 2 * geo.A_IN * geo.L_PIPE
+            check(abs(ry2 - weight - SURCHARGE) <= 1e-6 * weight,
+                  "t = 2: RY = %.9e, weight + surcharge = %.9e" % (ry2, weight + SURCHARGE))
+            check(abs(rx2 - expect_rx) <= 1e-6 * abs(expect_rx),
+                  "t = 2: RX = %.9e, -p 2 a L = %.9e" % (rx2, expect_rx))
+
+    # elastic hoop response in the open span
+    r1, r2 = row_at(rows, 1.0), row_at(rows, 2.0)
+    cols = list(rows[0].keys())[3:]
+    names = ["crown_z2.5", "invert_z2.5", "springline_z2.5", "crown_z6", "invert_z6", "crown_z9.5",
+             "invert_z9.5", "springline_z9.5", "ground_z2.5"]        # the deck's HISTORY order
+    col = dict(zip(names, cols))
+    if r1 and r2:
+        lame = lame_ur_b(PRESSURE, geo.A_IN, geo.B, 205000.0, 0.3)
+        d_vert = 0.5 * ((float(r2[col["crown_z9.5"]]) - float(r2[col["invert_z9.5"]]))
+                        - (float(r1[col["crown_z9.5"]]) - float(r1[col["invert_z9.5"]])))
+        d_hor = float(r2[col["springline_z9.5"]]) - float(r1[col["springline_z9.5"]])
+        for what, value in (("half the vertical diameter change", d_vert), ("springline u_x", d_hor)):
+            check(abs(value / lame - 1) <= 0.02,
+                  "z = 9.5, t = 1 -> 2: %s %.6e, Lame plane strain %.6e (%+.2f %%, tolerance 2 %%)"
+                  % (what, value, lame, 100 * (value / lame - 1)))
+
+    if args.reference:
+        ref = {}
+        for line in open(args.reference):
+            if line.strip() and not line.startswith("#"):
+                parts = line.split()
+                ref[(parts[0], float(parts[1]))] = [float(v) for v in parts[2:]]
+        found = False
+        for (name, t), values in ref.items():
+            if name != base:
+                continue
+            r = row_at(rows, t)
+            if r is None:
+                continue
+            found = True
+            got = [float(r[c]) for c in cols]
+            scale = max(abs(v) for v in values)
+            worst = max(abs(g - v) for g, v in zip(got, values))
+            check(len(got) == len(values) and worst <= 1e-6 * scale,
+                  "t = %g: the %d history values vs the regression values (largest difference "
+                  "%.2e, tolerance %.2e)" % (t, len(values), worst, 1e-6 * scale))
+        check(found, "regression values for %s in %s" % (base, args.reference))
+
+    if args.plastic:
+        import h5py
+        import numpy as np
+        with h5py.File(os.path.join(out, base + ".h5"), "r") as f:
+            groups = sorted(f["increments"].keys())
+            g = f["increments"][groups[-1]]
+            pipe = f["mesh/element_sets/pipe"][:] - 1
+            yielded = g["fields/yielded"][:][pipe]
+            s = g["stress"][:][pipe].mean(axis=1)       # element means, Voigt xx yy zz xy xz yz
+            xx, yy, zz, xy, xz, yz = (s[:, i] for i in range(6))
+            vm = np.sqrt(0.5 * ((xx - yy) ** 2 + (yy - zz) ** 2 + (zz - xx) ** 2)
+                         + 3 * (xy ** 2 + xz ** 2 + yz ** 2))
+        check(bool((yielded > 0).all()), "every pipe integration point yielded (%d of %d)"
+              % (int((yielded > 0).sum()), yielded.size))
+        check(vm.min() > 420.0, "every pipe element's von Mises stress > 420 (least %.1f)" % vm.min())
+    print("check_s6.py: %d failure(s)" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,27 @@
+# S6(b) pipe crossing a slope (docs/verification/s6.md). Included from tests/cases.cmake
+# (FRIX_BIN defined there). Each test runs one deck of inputs/s6_pipe_slope with run_s6.sh and
+# checks it with check_s6.py: the load reached; equilibrium of the reactions with the soil's
+# weight (0.018 x the mesh's soil volume), the surcharge and the internal pressure (1e-6); the
+# elastic hoop displacement in the open span against Lame in plane strain (2 %); the history
+# values at t = 2 (1 x) and t = 3 (10 x) against the frix regression values in reference.txt
+# (1e-6); for the 10 x runs the fully plastic pipe (every integration point yielded, von Mises
+# of every element above 420).
+set(s6_dir ${CMAKE_CURRENT_SOURCE_DIR}/contact_s6)
+set(s6_decks ${PROJECT_SOURCE_DIR}/inputs/s6_pipe_slope)
+
+# Default run: the coarse mesh (636 HEX8), mu = 0.3, steps 1 and 2 (geostatic, then 1 x in 7
+# increments): 10-30 s on the 2-core VM.
+add_test(NAME contact_s6_mu0.3_1x
+         COMMAND bash ${s6_dir}/run_s6.sh ${FRIX_BIN} ${s6_decks}/s6_mu0.3_1x.dck --end 2
+                 --reference ${s6_dir}/reference.txt)
+set_tests_properties(contact_s6_mu0.3_1x PROPERTIES LABELS "regression;contact;plasticity"
+                     TIMEOUT ${scaled_600})
+
+# The three friction coefficients to 10 x (coarse, 26 increments, 100-120 s each): slow.
+foreach(mu 0.1 0.3 0.6)
+  add_test(NAME contact_s6_mu${mu}
+           COMMAND bash ${s6_dir}/run_s6.sh ${FRIX_BIN} ${s6_decks}/s6_mu${mu}.dck --plastic
+                   --reference ${s6_dir}/reference.txt)
+  set_tests_properties(contact_s6_mu${mu} PROPERTIES LABELS "regression;contact;plasticity;slow"
+                       TIMEOUT ${scaled_600})
+endforeach()
