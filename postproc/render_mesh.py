@@ -36,6 +36,9 @@ def build_parser():
     parser.add_argument("--increment", default="last", metavar="SPEC",
                         help="last (default), first, 1-based position in the .pvd (negative: "
                              "from the end) or STEP:INCREMENT")
+    parser.add_argument("--block", default=None, metavar="N[,N...]",
+                        help="only the elements of these blocks (cell field 'block', the order "
+                             "of the deck's STRUCTURE ELEMENTS SET lines), e.g. a pipe inside soil")
     parser.add_argument("--scale", default="1", metavar="FACTOR|auto",
                         help="displacement magnification (default 1; 0 = reference shape; "
                              "auto = largest displacement shown as 10%% of the mesh diagonal)")
@@ -95,9 +98,21 @@ def main(argv=None):
     factor = magnification(args.scale, points, displacement)
     deformed = points + factor * displacement
 
-    faces, owners = boundary_faces(connectivity)
+    cells = np.arange(connectivity.shape[0])
+    if args.block:
+        try:
+            wanted = [int(item) for item in args.block.split(",") if item.strip()]
+        except ValueError:
+            raise UserError(f"--block: '{args.block}' is not a comma list of integers") from None
+        block_array = frix_results.cell_array(mesh, "block")
+        if block_array is None:
+            raise UserError("--block: the result has no cell field 'block'")
+        cells = np.flatnonzero(np.isin(np.asarray(block_array).astype(int).ravel(), wanted))
+        if cells.size == 0:
+            raise UserError(f"--block: no element in block(s) {args.block}")
+    faces, owners = boundary_faces(connectivity[cells])
     if args.cell:
-        values = frix_results.field_values(mesh, args.field, "cell")[owners]
+        values = frix_results.field_values(mesh, args.field, "cell")[cells][owners]
     else:
         values = frix_results.field_values(mesh, args.field, "point")[faces].mean(axis=1)
     low, high = color_range if color_range else (float(values.min()), float(values.max()))
@@ -119,11 +134,12 @@ def main(argv=None):
                                   edgecolors="none" if args.no_edges else "k",
                                   linewidths=0.0 if args.no_edges else 0.3)
     axes.add_collection3d(collection)
-    shown = deformed
+    used = np.unique(faces)
+    shown = deformed[used]
     if args.undeformed:
         edges = points[faces][:, [0, 1, 2, 3, 0]]
         axes.add_collection3d(Line3DCollection(edges, colors="0.6", linewidths=0.4))
-        shown = np.vstack([deformed, points])
+        shown = np.vstack([deformed[used], points[used]])
     lower, upper = shown.min(axis=0), shown.max(axis=0)
     extent = np.maximum(upper - lower, 1e-9 * max(float(np.max(upper - lower)), 1.0))
     axes.set_xlim(lower[0], lower[0] + extent[0])

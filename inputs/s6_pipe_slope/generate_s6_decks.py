@@ -415,44 +415,51 @@ HISTORY SET ground_z2.5 DOF 2 KIND U
 
 STEP3 = "STEP 3 NUMSTEP {n3} CONTROL Load                  // on to 10 x\n"
 MESHES = [("s6_coarse.msh", 1, ""), ("s6_fine.msh", 2, "_fine")]
-MUS = [(0.1, "0.1"), (0.3, "0.3"), (0.6, "0.6")]
+MUS = ["0.1", "0.3", "0.6"]
+
+
+def deck(mu, mesh, counts, title, ten_x=True, gravity10=False, pipe_end_free=False,
+         results="VTK Yes  LISTING Yes  HDF5 Yes"):
+    """One deck's text: the benchmark deck, or a variant (steps 1-2 only, the soil's weight
+    raised with the loads, the pipe's end z = 0 free axially)."""
+    pair = "EPSN 1.0e3 EPST 1.0e2 MU %s GAPTOL 1.0e-6" % mu
+    text = HEADER.format(title=title, mesh=mesh, counts=counts[mesh],
+                         contact=pair + " (NORMALS default)", n3=18)
+    body = BODY.format(mesh=mesh, pair=pair, step3=STEP3.format(n3=18) if ten_x else "",
+                       results=results)
+    if not ten_x:
+        text = text.replace(" Step 3: both to 10 x in 18 increments, the soil's\n weight held at 1 x.",
+                            " (Step 3, to 10 x, left out.)\n")
+    if gravity10:
+        text = text.replace("the soil's\n weight held at 1 x.", "the soil's\n weight too (CURVE 1).")
+        body = body.replace("CURVE 1 POINTS 0.0 0.0  1.0 1.0  3.0 1.0              // soil weight: on in step 1, held",
+                            "CURVE 1 POINTS 0.0 0.0  1.0 1.0  2.0 1.0  3.0 10.0   // soil weight: 1 x, then 10 x")
+    if pipe_end_free:
+        text = text.replace(" u_z = 0 at z = 0 (soil and pipe: the buried line continues)",
+                            " u_z = 0 at z = 0 on the soil only (the pipe's end z = 0 free axially)")
+        body = body.replace("SET pipe_z0       DOF 0 0 1 VAL 0.0 0.0 0.0\n", "")
+    return text + body
 
 
 def write_decks(counts):
     for mesh, refine, tag in MESHES:
-        for mu, mtext in MUS:
-            pair = "EPSN 1.0e3 EPST 1.0e2 MU %s GAPTOL 1.0e-6" % mtext
-            name = "s6_mu%s%s" % (mtext, tag)
-            n3 = 18
-            text = HEADER.format(title="mu = %s%s." % (mtext, ", refined mesh" if refine > 1 else ""),
-                                 mesh=mesh, counts=counts[mesh], contact=pair + " (NORMALS default)",
-                                 n3=n3)
-            text += BODY.format(mesh=mesh, pair=pair, step3=STEP3.format(n3=n3),
-                                results="VTK Yes  LISTING Yes  HDF5 Yes")
-            write(name, text)
+        for mu in MUS:
+            write("s6_mu%s%s" % (mu, tag), deck(mu, mesh, counts, "mu = %s%s." % (
+                mu, ", refined mesh" if refine > 1 else "")))
+    coarse = "s6_coarse.msh"
     # sensitivity to the reading of "all loads raised to 10 x": the soil's weight raised with
-    # them in step 3 (CURVE 1 to 10 at t = 3), coarse mesh, mu = 0.1 and 0.3
-    for mtext in ("0.1", "0.3"):
-        pair = "EPSN 1.0e3 EPST 1.0e2 MU %s GAPTOL 1.0e-6" % mtext
-        text = HEADER.format(title="mu = %s, soil weight also raised to 10 x in step 3." % mtext,
-                             mesh="s6_coarse.msh", counts=counts["s6_coarse.msh"],
-                             contact=pair + " (NORMALS default)", n3=18)
-        text = text.replace("the soil's\n weight held at 1 x.", "the soil's\n weight too (CURVE 1).")
-        body = BODY.format(mesh="s6_coarse.msh", pair=pair, step3=STEP3.format(n3=18),
-                           results="VTK Yes  LISTING Yes  HDF5 Yes")
-        body = body.replace("CURVE 1 POINTS 0.0 0.0  1.0 1.0  3.0 1.0              // soil weight: on in step 1, held",
-                            "CURVE 1 POINTS 0.0 0.0  1.0 1.0  2.0 1.0  3.0 10.0   // soil weight: 1 x, then 10 x")
-        write("s6_mu%s_g10" % mtext, text + body)
+    # them in step 3 (CURVE 1 to 10 at t = 3), mu = 0.1 and 0.3
+    for mu in ("0.1", "0.3"):
+        write("s6_mu%s_g10" % mu, deck(mu, coarse, counts, "mu = %s, soil weight also raised to "
+                                       "10 x in step 3." % mu, gravity10=True))
+    # sensitivity to the pipe's support at z = 0: axially free (the axial restraint of the buried
+    # part then comes from friction alone)
+    for mu in MUS:
+        write("s6_mu%s_free0" % mu, deck(mu, coarse, counts, "mu = %s, the pipe's end z = 0 free "
+                                         "axially." % mu, pipe_end_free=True))
     # the short deck of the default test: the coarse mesh, mu = 0.3, steps 1 and 2 only (to 1 x)
-    pair = "EPSN 1.0e3 EPST 1.0e2 MU 0.3 GAPTOL 1.0e-6"
-    text = HEADER.format(title="mu = 0.3, steps 1 and 2 only (to 1 x: the default test).",
-                         mesh="s6_coarse.msh", counts=counts["s6_coarse.msh"],
-                         contact=pair + " (NORMALS default)", n3=18)
-    text = text.replace(" Step 3: both to 10 x in 18 increments, the soil's\n weight held at 1 x.",
-                        " (Step 3, to 10 x, left out.)\n")
-    text += BODY.format(mesh="s6_coarse.msh", pair=pair, step3="",
-                        results="VTK No  LISTING Yes  HDF5 No")
-    write("s6_mu0.3_1x", text)
+    write("s6_mu0.3_1x", deck("0.3", coarse, counts, "mu = 0.3, steps 1 and 2 only (to 1 x: the "
+                              "default test).", ten_x=False, results="VTK No  LISTING Yes  HDF5 No"))
 
 
 def write(name, text):
