@@ -66,7 +66,19 @@ else
     fail "render_mesh --scale auto: $(cat "$WORK/log.txt")"
 fi
 
+# --block: the bar is block 1 (its one SET line), so the same 18 faces are drawn.
+if "${RENDER[@]}" "$OUT/bar.pvd" --block 1 -o "$WORK/b1.png" > "$WORK/log.txt" 2>&1 \
+        && grep -q "18 boundary faces" "$WORK/log.txt"; then
+    check_png "$WORK/b1.png" "render_mesh --block 1 (18 boundary faces)"
+else
+    fail "render_mesh --block 1: $(cat "$WORK/log.txt")"
+fi
+
 # 3. User mistakes.
+expect_user_error "empty --block" "no element in block(s) 2" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --block 2 -o "$WORK/x.png"
+expect_user_error "bad --block" "--block: 'pipe' is not a comma list of integers" \
+    "${RENDER[@]}" "$OUT/bar.pvd" --block pipe -o "$WORK/x.png"
 expect_user_error "missing result" "not found: $WORK/none.vtu" \
     "${RENDER[@]}" "$WORK/none.vtu" -o "$WORK/x.png"
 expect_user_error "unknown field" "no point field 'pressure'" \
