@@ -72,10 +72,10 @@ def main():
         r = np.hypot(p[:, 0], p[:, 1])
         crown = (np.abs(p[:, 0]) < 1e-3) & (p[:, 1] > 0.5 * r)
         invert = (np.abs(p[:, 0]) < 1e-3) & (p[:, 1] < -0.5 * r)
-        spring = np.abs(p[:, 1]) < 1e-3 * r.max()
-        zs = np.unique(np.round(p[:, 2], 6))
+        spring = np.abs(p[:, 1]) < 0.01 * r.max()         # the geostatic step moved it
+        zs = np.unique(np.round(p[:, 2], 2))                # stations (geostatic shift < 2 mm)
         figure, axes = pyplot.subplots(figsize=(7, 4.2))
-        axes.plot(zs, [mag[np.abs(p[:, 2] - z) < 1e-6].max() * 1e3 for z in zs], "k-o", ms=3,
+        axes.plot(zs, [mag[np.abs(p[:, 2] - z) < 0.01].max() * 1e3 for z in zs], "k-o", ms=3,
                   label="largest |du| at the station")
         for mask, comp, name in ((crown, 1, "du_y crown"), (invert, 1, "du_y invert"),
                                  (spring, 0, "du_x springline")):
