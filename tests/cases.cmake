@@ -136,6 +136,14 @@ add_test(NAME loads_closed_form COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/loads/c
          ${CMAKE_CURRENT_SOURCE_DIR}/loads)
 set_tests_properties(loads_closed_form PROPERTIES LABELS regression)
 
+# STEP ... RESET_DISPLACEMENT: reported displacements against closed forms in every output,
+# and restarts across the resets bit-identical to the uninterrupted run (tests/steps).
+add_test(NAME steps_reset_displacement COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/steps/check_reset_displacement.sh
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/steps/reset_displacement_column.dck)
+add_test(NAME restart_reset_displacement COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/steps/check_reset_restart.sh
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/steps/reset_displacement_column.dck)
+set_tests_properties(steps_reset_displacement restart_reset_displacement PROPERTIES LABELS regression)
+
 # Regression for the first-increment friction defect found by benchmark P2: stick tractions
 # must not depend on the number of increments (bench/p2/check_first_increment_friction.sh).
 include(${PROJECT_SOURCE_DIR}/bench/p2/p2_tests.cmake)
