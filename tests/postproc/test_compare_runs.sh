@@ -62,20 +62,6 @@ done
 A=$WORK/a/a.h5
 B=$WORK/b/b.h5
 
-# check_table CSV WHAT PYTHON_CHECK: reads the --table output into columns `c` (floats).
-check_table() {
-    local message
-    if message=$("$PYTHON" - "$1" "$3" <<'PY' 2>&1
-import csv, sys
-import numpy as np
-with open(sys.argv[1]) as stream:
-    rows = list(csv.DictReader(stream))
-c = {key: np.array([float(row[key]) for row in rows]) for key in rows[0]}
-exec(sys.argv[2])
-print("ok")
-PY
-    ); then pass "$2"; else fail "$2: $message"; fi
-}
 
 # 1. Real runs, contact pair 1 at the last common time t = 1: the 6 slave nodes 101..106
 #    (z = 0), sorted by x (then id), dz = -2 mm, dx = dy = 0 (round-off: 1e-12 mm).

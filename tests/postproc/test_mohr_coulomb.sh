@@ -60,20 +60,6 @@ meshio.write(f"{folder}/no_stress.vtu", meshio.Mesh(points, [("hexahedron", cell
              file_format="vtu")
 PY
 
-# check_table CSV WHAT PYTHON_CHECK: reads the --table output into columns `c`.
-check_table() {
-    local message
-    if message=$("$PYTHON" - "$1" "$3" <<'PY' 2>&1
-import csv, sys
-import numpy as np
-with open(sys.argv[1]) as stream:
-    rows = list(csv.DictReader(stream))
-c = {key: np.array([float(row[key]) for row in rows]) for key in rows[0]}
-exec(sys.argv[2])
-print("ok")
-PY
-    ); then pass "$2"; else fail "$2: $message"; fi
-}
 # hand values of the table above (s: s1 s2 s3, f), also used by the --vtk checks;
 # eigvalsh round-off: 1e-14 absolute (stresses <= 1)
 HAND_VALUES='
