@@ -40,7 +40,8 @@ TENSOR_COMPONENTS = {"xx": 0, "yy": 1, "zz": 2, "xy": 3, "yz": 4, "xz": 5}
 VTK_TENSOR_INDEX = ((0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2))
 
 #: Faces of an 8-node hexahedron (VTK type 12, the frix/VTK node order), each with its
-#: nodes counter-clockwise seen from outside the element.
+#: nodes counter-clockwise seen from outside the element; in frix's face numbering 1..6
+#: (``hex8_face_nodes`` in src/mesh/frix_mesh.f90, the ``faces`` of HDF5 surfaces).
 HEX8_FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 
 
@@ -485,6 +486,55 @@ def read_id_file(path):
     return ids
 
 
+# ----------------------------------------------------------------------------- contact CSV
+
+def contact_pair_nodes(path, pair, all_passes=False):
+    """User node ids of contact pair ``pair`` from ``<base>_contact.csv`` (docs/output.md),
+    in the file's order (frix's pass order) and the passes they come from: the pair's first
+    pass (its SLAVE surface's nodes), or with ``all_passes`` every pass of the pair (with
+    ``PASSES 2`` also the master surface's nodes). Read from the file's first increment: the
+    slave nodes of a pair do not change during a run."""
+    require_file(path, "contact CSV file")
+    try:
+        with open(path, encoding="utf-8") as stream:
+            header = stream.readline().strip().split(",")
+            columns = {name: header.index(name) for name in ("step", "increment", "pair",
+                                                             "pass", "node")}
+            rows, first = [], None
+            for number, line in enumerate(stream, start=2):
+                fields = line.split(",")
+                if len(fields) != len(header):
+                    raise UserError(f"{path}: line {number}: {len(fields)} fields, header has "
+                                    f"{len(header)}")
+                key = (fields[columns["step"]], fields[columns["increment"]])
+                if first is None:
+                    first = key
+                elif key != first:
+                    break
+                rows.append([int(fields[columns[name]]) for name in ("pair", "pass", "node")])
+    except ValueError as error:
+        raise UserError(f"{path}: not a frix contact CSV file (header 'step,increment,time,"
+                        f"pair,pass,node,...'): {error}") from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise UserError(f"cannot read {path}: {error}") from None
+    rows = np.array(rows, dtype=int).reshape(-1, 3)
+    pairs = sorted(set(rows[:, 0].tolist()))
+    if pair not in pairs:
+        raise UserError(f"{path}: no contact pair {pair} (pairs: "
+                        f"{', '.join(map(str, pairs)) or 'none, no converged increment'})")
+    rows = rows[rows[:, 0] == pair]
+    passes = sorted(set(rows[:, 1].tolist()))
+    if not all_passes:
+        rows = rows[rows[:, 1] == passes[0]]
+        passes = passes[:1]
+    ids, seen = [], set()
+    for node in rows[:, 2]:
+        if node not in seen:
+            seen.add(node)
+            ids.append(int(node))
+    return np.array(ids, dtype=int), passes
+
+
 # ----------------------------------------------------------------------------- HDF5
 
 class GaussStresses:
@@ -506,50 +556,152 @@ class GaussStresses:
         return f"step {self.step} incr {self.increment} (t = {self.time:g})"
 
 
+class H5Increment:
+    """One complete increment group of a frix HDF5 results file: ``name`` (``000001``, ...),
+    ``position`` (1-based among the complete groups), ``step``, ``increment``, ``time``."""
+
+    def __init__(self, name, position, step, increment, time):
+        self.name = name
+        self.position = position
+        self.step = step
+        self.increment = increment
+        self.time = time
+
+    def key(self):
+        return f"{self.step}:{self.increment}"
+
+    def label(self):
+        return f"step {self.step} incr {self.increment} (t = {self.time:g})"
+
+
+class H5Results:
+    """A frix HDF5 results file (docs/hdf5-layout.md), opened read-only.
+
+    ``increments``: the complete increment groups (:class:`H5Increment`, in the order
+    written; groups without the ``complete`` attribute are ignored). Mesh arrays are read on
+    demand (:meth:`mesh_array`, :meth:`node_set`, :meth:`surface_nodes`), increment datasets
+    with :meth:`dataset`. Every read error is a :class:`UserError` naming the file. Use as a
+    context manager or call :meth:`close`."""
+
+    def __init__(self, path):
+        require_file(path, "HDF5 file")
+        try:
+            import h5py
+        except ImportError:
+            raise UserError("reading HDF5 needs h5py (Debian: python3-h5py)") from None
+        self.path = path
+        try:
+            self.file = h5py.File(path, "r")
+        except OSError as error:
+            raise UserError(f"cannot read {path} as a frix HDF5 results file: {error}") from None
+        try:
+            names = sorted(self.file["increments"], key=lambda name: (len(name), name))
+            self.increments = []
+            for name in names:
+                attrs = self.file["increments"][name].attrs
+                if int(attrs.get("complete", 0)) != 1:
+                    continue
+                self.increments.append(H5Increment(name, len(self.increments) + 1,
+                                                   int(attrs["step"]), int(attrs["increment"]),
+                                                   float(attrs["time"])))
+        except (OSError, KeyError, ValueError, TypeError) as error:
+            self.close()
+            raise UserError(f"cannot read {path} as a frix HDF5 results file: {error}") from None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exception):
+        self.close()
+
+    def close(self):
+        if getattr(self, "file", None) is not None:
+            self.file.close()
+            self.file = None
+
+    def available(self):
+        return ", ".join(entry.key() for entry in self.increments) or "none"
+
+    def select(self, spec="last"):
+        """The increment chosen by ``spec``: last | first | 1-based position among the
+        complete groups (negative from the end) | STEP:INCREMENT."""
+        if not self.increments:
+            raise UserError(f"{self.path}: no complete increment group under /increments")
+        spec = str(spec).strip().lower()
+        if spec in ("last", "first"):
+            return self.increments[-1 if spec == "last" else 0]
+        if re.fullmatch(r"\d+:\d+", spec):
+            for entry in self.increments:
+                if entry.key() == spec:
+                    return entry
+            raise UserError(f"{self.path}: no increment {spec} (available: {self.available()})")
+        count = len(self.increments)
+        if re.fullmatch(r"-?\d+", spec) and 1 <= abs(int(spec)) <= count:
+            return self.increments[int(spec) - 1 if int(spec) > 0 else int(spec)]
+        raise UserError(f"{self.path}: bad increment selection '{spec}' (1..{count}, "
+                        "last, first or STEP:INCREMENT)")
+
+    def _read(self, location, what):
+        try:
+            return self.file[location][()]
+        except (OSError, KeyError, ValueError, TypeError) as error:
+            raise UserError(f"cannot read {what} from {self.path} as a frix HDF5 results file: "
+                            f"{error}") from None
+
+    def mesh_array(self, name):
+        """``/mesh/<name>`` (coordinates, node_ids, connectivity, element_ids, element_block)."""
+        return np.asarray(self._read(f"mesh/{name}", f"/mesh/{name}"))
+
+    def dataset(self, entry, name):
+        """Dataset ``name`` (e.g. ``displacement``, ``stress``) of increment ``entry``."""
+        location = f"increments/{entry.name}/{name}"
+        return np.asarray(self._read(location, "/" + location))
+
+    def _names(self, kind):
+        group = self.file.get(f"mesh/{kind}")
+        return sorted(group.keys()) if group is not None else []
+
+    def node_set(self, name):
+        """0-based internal node numbers of ``/mesh/node_sets/<name>``."""
+        if name not in self._names("node_sets"):
+            raise UserError(f"{self.path}: no node set '{name}' (node sets: "
+                            f"{', '.join(self._names('node_sets')) or 'none'})")
+        return np.asarray(self._read(f"mesh/node_sets/{name}", "a node set"), dtype=int) - 1
+
+    def element_set(self, name):
+        """0-based internal element numbers of ``/mesh/element_sets/<name>``."""
+        if name not in self._names("element_sets"):
+            raise UserError(f"{self.path}: no element set '{name}' (element sets: "
+                            f"{', '.join(self._names('element_sets')) or 'none'})")
+        return np.asarray(self._read(f"mesh/element_sets/{name}", "an element set"),
+                          dtype=int) - 1
+
+    def surface_nodes(self, name):
+        """0-based internal node numbers (sorted, unique) of the faces of surface ``name``."""
+        if name not in self._names("surfaces"):
+            raise UserError(f"{self.path}: no surface '{name}' (surfaces: "
+                            f"{', '.join(self._names('surfaces')) or 'none'})")
+        elements = np.asarray(self._read(f"mesh/surfaces/{name}/elements", "a surface"), dtype=int)
+        faces = np.asarray(self._read(f"mesh/surfaces/{name}/faces", "a surface"), dtype=int)
+        connectivity = self.mesh_array("connectivity")
+        nodes = [connectivity[element - 1, corner] - 1
+                 for element, face in zip(elements, faces) for corner in HEX8_FACES[face - 1]]
+        return np.unique(np.asarray(nodes, dtype=int))
+
+
 def read_h5_stresses(path, spec="last"):
     """Gauss-point stresses of the increment ``spec`` (last | first | 1-based position among
     the complete increment groups, negative from the end | STEP:INCREMENT) of an HDF5 file."""
-    require_file(path, "HDF5 file")
-    try:
-        import h5py
-    except ImportError:
-        raise UserError("reading HDF5 needs h5py (Debian: python3-h5py)") from None
-    try:
-        with h5py.File(path, "r") as stream:
-            groups = [stream["increments"][name] for name in
-                      sorted(stream["increments"], key=lambda name: (len(name), name))]
-            groups = [group for group in groups if int(group.attrs.get("complete", 0)) == 1]
-            if not groups:
-                raise UserError(f"{path}: no complete increment group under /increments")
-            keys = [(int(group.attrs["step"]), int(group.attrs["increment"])) for group in groups]
-            spec = str(spec).strip().lower()
-            if spec in ("last", "first"):
-                index = -1 if spec == "last" else 0
-            elif re.fullmatch(r"\d+:\d+", spec):
-                key = tuple(int(part) for part in spec.split(":"))
-                if key not in keys:
-                    raise UserError(f"{path}: no increment {spec} (available: "
-                                    f"{', '.join(f'{s}:{i}' for s, i in keys)})")
-                index = keys.index(key)
-            elif re.fullmatch(r"-?\d+", spec) and 1 <= abs(int(spec)) <= len(groups):
-                index = int(spec) - 1 if int(spec) > 0 else int(spec)
-            else:
-                raise UserError(f"{path}: bad increment selection '{spec}' (1..{len(groups)}, "
-                                "last, first or STEP:INCREMENT)")
-            group = groups[index]
-            voigt = np.asarray(group["stress"][()], dtype=float)
-            element_ids = np.asarray(stream["mesh/element_ids"][()], dtype=int)
-            blocks = np.asarray(stream["mesh/element_block"][()], dtype=int)
-            time = float(group.attrs["time"])
-    except UserError:
-        raise
-    except (OSError, KeyError, ValueError, TypeError) as error:
-        raise UserError(f"cannot read {path} as a frix HDF5 results file: {error}") from None
+    with H5Results(path) as results:
+        entry = results.select(spec)
+        voigt = np.asarray(results.dataset(entry, "stress"), dtype=float)
+        element_ids = results.mesh_array("element_ids").astype(int)
+        blocks = results.mesh_array("element_block").astype(int)
     if voigt.ndim != 3 or voigt.shape[2] != 6 or voigt.shape[0] != element_ids.size:
         raise UserError(f"{path}: stress has shape {voigt.shape}, expected "
                         f"({element_ids.size}, n_points, 6)")
     return GaussStresses(path, voigt[:, :, [0, 1, 2, 3, 5, 4]], element_ids, blocks,
-                         keys[index][0], keys[index][1], time)
+                         entry.step, entry.increment, entry.time)
 
 
 # ----------------------------------------------------------------------------- tensors

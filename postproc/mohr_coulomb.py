@@ -24,7 +24,10 @@ stresses; or a frix HDF5 results file (.h5, docs/hdf5-layout.md): the stresses a
 integration point (Voigt order xx yy zz xy xz yz there), an element counting as failed when
 one of its points is. Output: a summary on stdout, optionally a table (--table out.csv) with
 one row per element (node, integration point): element_id, block[, point], s1, s2, s3, f,
-failed.
+failed; optionally a .vtu (--vtk out.vtu) with the checked elements (cells s1, s2, s3, f,
+failed, element_id, block; with HDF5 input the values of each element's point of largest f,
+and failed_points) or, with --point, the mesh with these fields at the nodes, and the
+displacement as point data, for ParaView (Threshold on `failed`, Warp By Vector).
 """
 
 import csv
@@ -66,6 +69,9 @@ def build_parser():
                              "(negative: from the end) or STEP:INCREMENT")
     parser.add_argument("--block", default=None, metavar="N[,N...]",
                         help="only elements of these blocks (cell field 'block'), e.g. the soil")
+    parser.add_argument("--element-set", default=None, metavar="NAME",
+                        help="only the elements of this element set (HDF5 input: "
+                             "/mesh/element_sets/NAME)")
     parser.add_argument("--point", action="store_true",
                         help="use the nodal (recovered) stresses instead of the element means")
     parser.add_argument("--stress-field", default="stress", metavar="NAME",
@@ -76,23 +82,63 @@ def build_parser():
                         help="count f >= -R (|s1| + |s3| + c) as failure (default 1e-12)")
     parser.add_argument("--table", default=None, metavar="CSV",
                         help="write one row per element/node: id, block, s1, s2, s3, f, failed")
+    parser.add_argument("--vtk", default=None, metavar="VTU",
+                        help="write the checked elements (or with --point the nodes) with the "
+                             "fields s1, s2, s3, f, failed as a .vtu for ParaView")
     parser.add_argument("--exit-code", action="store_true",
                         help="exit 1 when at least one element is at or beyond failure")
     return parser
 
 
+class Geometry:
+    """The mesh of the checked result, for --vtk and --element-set: reference ``points``
+    (n, 3), HEX8 ``cells`` (0-based, n_cells x 8), ``displacement`` (n, 3) or None, and
+    ``element`` (0-based cell of each stress row; None for nodal rows)."""
+
+    def __init__(self, points, cells, displacement, element):
+        self.points = points
+        self.cells = cells
+        self.displacement = displacement
+        self.element = element
+
+
+def h5_geometry(args, gauss, n_points):
+    """Geometry (and the element set's 0-based elements, or None) of the HDF5 increment of
+    ``gauss``, read only when --vtk or --element-set asks for it."""
+    with frix_results.H5Results(args.result) as results:
+        entry = results.select(f"{gauss.step}:{gauss.increment}")
+        members = None if args.element_set is None else results.element_set(args.element_set)
+        if args.vtk is None:
+            return None, members
+        points = np.asarray(results.mesh_array("coordinates"), dtype=float)
+        cells = np.asarray(results.mesh_array("connectivity"), dtype=int) - 1
+        displacement = np.asarray(results.dataset(entry, "displacement"), dtype=float)
+    element = np.repeat(np.arange(len(gauss.element_ids)), n_points)
+    return Geometry(points, cells, displacement, element), members
+
+
 def load_stresses(args):
     """(stress rows (n, 6) VTK order, ids, blocks, integration point numbers or None, kind,
-    description) from the .pvd/.vtu (element means or nodes) or the HDF5 file (points)."""
+    description, Geometry or None, rows of the element set or None) from the .pvd/.vtu
+    (element means or nodes) or the HDF5 file (points)."""
     extension = os.path.splitext(args.result)[1].lower()
     if extension in (".h5", ".hdf5"):
         if args.point:
             raise UserError("--point works with .pvd/.vtu results, not with HDF5")
         gauss = frix_results.read_h5_stresses(args.result, args.increment)
         n_elements, n_points, _ = gauss.stress.shape
+        geometry, members = None, None
+        if args.vtk is not None or args.element_set is not None:
+            geometry, members = h5_geometry(args, gauss, n_points)
+        in_set = None if members is None else np.repeat(np.isin(np.arange(n_elements), members),
+                                                        n_points)
         return (gauss.stress.reshape(-1, 6), np.repeat(gauss.element_ids, n_points),
                 np.repeat(gauss.blocks, n_points), np.tile(np.arange(1, n_points + 1), n_elements),
-                "elements", f"{args.result} ({gauss.label()}, integration points)")
+                "elements", f"{args.result} ({gauss.label()}, integration points)", geometry,
+                in_set)
+    if args.element_set is not None:
+        raise UserError("--element-set needs an HDF5 results file (a .pvd/.vtu has no element "
+                        "sets); use --block")
     series = frix_results.ResultSeries(args.result)
     entries = series.select(args.increment)
     if len(entries) != 1:
@@ -103,17 +149,62 @@ def load_stresses(args):
     if not frix_results.has_field(mesh, args.stress_field, location):
         raise UserError(f"{entry.path}: no {location} field '{args.stress_field}'")
     description = f"{entry.path} ({entry.label()}, {'nodes' if args.point else 'element means'})"
+    displacement = (np.asarray(mesh.point_data["displacement"], dtype=float)
+                    if "displacement" in mesh.point_data else None)
+    cells = frix_results.hexahedra(mesh)
     if args.point:
         stress = np.asarray(mesh.point_data[args.stress_field], dtype=float)
         ids = frix_results.node_ids(series, mesh)
         ids = np.arange(1, len(stress) + 1) if ids is None else ids
-        return stress, ids, np.full(len(stress), -1), None, "nodes", description
+        geometry = Geometry(np.asarray(mesh.points, dtype=float), cells, displacement, None)
+        return stress, ids, np.full(len(stress), -1), None, "nodes", description, geometry, None
     stress = frix_results.cell_array(mesh, args.stress_field).astype(float)
     element_ids = frix_results.cell_array(mesh, "element_id")
     ids = np.arange(1, len(stress) + 1) if element_ids is None else element_ids.astype(int).ravel()
     block_array = frix_results.cell_array(mesh, "block")
     blocks = np.full(len(stress), -1) if block_array is None else block_array.astype(int).ravel()
-    return stress, ids, blocks, None, "elements", description
+    geometry = Geometry(np.asarray(mesh.points, dtype=float), cells, displacement,
+                        np.arange(len(stress)))
+    return stress, ids, blocks, None, "elements", description, geometry, None
+
+
+def write_vtk(path, geometry, rows, ids, blocks, principal, f, failed, points, what):
+    """The checked elements as HEX8 cells (or with nodal rows the whole mesh with point
+    fields) with s1, s2, s3, f, failed, the ids and the displacement (point data)."""
+    import meshio
+    fields = {"s1": principal[:, 0], "s2": principal[:, 1], "s3": principal[:, 2], "f": f}
+    if what == "nodes":
+        # nodal rows: every node, in the mesh's order (--block is refused with --point)
+        point_data = dict(fields)
+        point_data["failed"] = failed.astype(np.int32)
+        point_data["node_id"] = ids.astype(np.int32)
+        used, cells, cell_data = np.arange(len(geometry.points)), geometry.cells, {}
+    else:
+        element = geometry.element[rows]
+        kept = np.unique(element)
+        # the row of largest f of each element (its worst integration point)
+        order = np.lexsort((-f, element))
+        first = order[np.searchsorted(element[order], kept)]
+        cell_data = {name: [values[first]] for name, values in fields.items()}
+        cell_data["failed"] = [np.array([failed[element == cell].any() for cell in kept],
+                                        dtype=np.int32)]
+        cell_data["element_id"] = [ids[first].astype(np.int32)]
+        cell_data["block"] = [blocks[first].astype(np.int32)]
+        if points is not None:
+            cell_data["failed_points"] = [np.bincount(np.searchsorted(kept, element[failed]),
+                                                      minlength=kept.size).astype(np.int32)]
+        used = np.unique(geometry.cells[kept])
+        cells = np.searchsorted(used, geometry.cells[kept])
+        point_data = {}
+    if geometry.displacement is not None:
+        point_data["displacement"] = geometry.displacement[used]
+    mesh = meshio.Mesh(geometry.points[used], [("hexahedron", cells)], point_data=point_data,
+                       cell_data=cell_data)
+    try:
+        meshio.vtu.write(path, mesh)
+    except OSError as error:
+        raise UserError(f"cannot write {path}: {error}") from None
+    return len(cells)
 
 
 def main(argv=None):
@@ -126,7 +217,7 @@ def main(argv=None):
         raise UserError(f"--rel-tol must be >= 0, got {args.rel_tol}")
     if args.point and args.block is not None:
         raise UserError("--block works with element stresses, not with --point")
-    stress, ids, blocks, points, what, description = load_stresses(args)
+    stress, ids, blocks, points, what, description, geometry, in_set = load_stresses(args)
     if stress.ndim != 2 or stress.shape[1] != 6:
         raise UserError(f"{args.result}: field '{args.stress_field}' has shape {stress.shape}, "
                         "expected 6 components")
@@ -144,6 +235,12 @@ def main(argv=None):
         if not keep.any():
             raise UserError(f"no element in block(s) {args.block} (blocks present: "
                             f"{', '.join(str(b) for b in np.unique(blocks))})")
+    if in_set is not None:
+        keep &= in_set
+        if not keep.any():
+            raise UserError(f"no element of element set {args.element_set}"
+                            + (f" in block(s) {args.block}" if args.block is not None else ""))
+    rows = np.flatnonzero(keep)
     stress, ids, blocks = stress[keep], ids[keep], blocks[keep]
     points = points[keep] if points is not None else None
 
@@ -181,6 +278,10 @@ def main(argv=None):
         except OSError as error:
             raise UserError(f"cannot write {args.table}: {error}") from None
         print(f"wrote {args.table} ({len(f)} rows)")
+    if args.vtk is not None:
+        count = write_vtk(args.vtk, geometry, rows, ids, blocks, principal, f, failed, points,
+                          what)
+        print(f"wrote {args.vtk} ({count} {'cells, point fields' if what == 'nodes' else 'cells'})")
     return 1 if (args.exit_code and failed.any()) else 0
 
 

@@ -118,7 +118,7 @@ add_test(NAME restart_tied COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/rest
 set_tests_properties(restart_tied PROPERTIES LABELS "regression;contact")
 
 # Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
-foreach(script plot_history plot_line render_mesh mohr_coulomb)
+foreach(script plot_history plot_line render_mesh mohr_coulomb compare_runs)
   add_test(NAME postproc_${script}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/postproc/test_${script}.sh ${FRIX_BIN})
   set_tests_properties(postproc_${script} PROPERTIES LABELS postproc)
@@ -135,6 +135,14 @@ endforeach()
 add_test(NAME loads_closed_form COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/loads/check_loads.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/loads)
 set_tests_properties(loads_closed_form PROPERTIES LABELS regression)
+
+# STEP ... RESET_DISPLACEMENT: reported displacements against closed forms in every output,
+# and restarts across the resets bit-identical to the uninterrupted run (tests/steps).
+add_test(NAME steps_reset_displacement COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/steps/check_reset_displacement.sh
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/steps/reset_displacement_column.dck)
+add_test(NAME restart_reset_displacement COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/steps/check_reset_restart.sh
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/steps/reset_displacement_column.dck)
+set_tests_properties(steps_reset_displacement restart_reset_displacement PROPERTIES LABELS regression)
 
 # Regression for the first-increment friction defect found by benchmark P2: stick tractions
 # must not depend on the number of increments (bench/p2/check_first_increment_friction.sh).

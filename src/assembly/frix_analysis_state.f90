@@ -6,6 +6,11 @@
 !> failed increment (the contact system's committed part needs no restoring: the iterations
 !> never change it); a restart (frix_state_restart) reads the displacements, EAS parameters
 !> and history, commits them with `commit_solution`, and sets the contact history itself.
+!>
+!> The displacement reference of RESET_DISPLACEMENT (docs/deck-format.md, STEPS) is kept here
+!> too: `take_displacement_reference` copies the committed displacements at the start of such a
+!> step, and `reported_displacement` is the one place computing what every output reports,
+!> u_reported = u_total - u_reference. The mechanics never see the reference.
 module frix_analysis_state
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -16,12 +21,16 @@ module frix_analysis_state
    private
 
    public :: analysis_state_t, create_analysis_state, commit_state, commit_solution, restore_state
+   public :: take_displacement_reference, reported_displacement
 
    type :: analysis_state_t
       real(dp) :: time = 0.0_dp               !! pseudo time (load factor) of `u`
       real(dp) :: committed_time = 0.0_dp
       real(dp), allocatable :: u(:)           !! (3*n_nodes) current total displacements, node-major
       real(dp), allocatable :: committed_u(:)
+      !> (3*n_nodes) total displacements from which the reported ones are measured
+      !> (RESET_DISPLACEMENT); unallocated: none taken, the total displacements are reported
+      real(dp), allocatable :: reference_u(:)
       real(dp), allocatable :: alpha(:, :)    !! (max EAS parameters, n_elements) current iterate
       real(dp), allocatable :: committed_alpha(:, :)
       real(dp), allocatable :: history(:, :, :)           !! (max n_state, n_points, n_elements) current
@@ -90,4 +99,23 @@ contains
       state%history = state%committed_history
       if (state%has_contact) call restore_multipliers(state%contact)
    end subroutine restore_state
+
+   !> RESET_DISPLACEMENT at the start of a step: the committed (converged) displacements become
+   !> the reference of the reported ones, replacing any earlier reference.
+   subroutine take_displacement_reference(state)
+      type(analysis_state_t), intent(inout) :: state
+      state%reference_u = state%committed_u
+   end subroutine take_displacement_reference
+
+   !> The committed displacements as reported by every output (3, n_nodes): the total ones
+   !> less the reference of the last RESET_DISPLACEMENT step, if any.
+   pure function reported_displacement(state) result(u)
+      type(analysis_state_t), intent(in) :: state
+      real(dp), allocatable :: u(:, :)
+      if (allocated(state%reference_u)) then
+         u = reshape(state%committed_u - state%reference_u, [3, size(state%committed_u)/3])
+      else
+         u = reshape(state%committed_u, [3, size(state%committed_u)/3])
+      end if
+   end function reported_displacement
 end module frix_analysis_state

@@ -36,7 +36,14 @@ module frix_increment_results
       integer :: iterations = 0         !! Newton iterations of the increment
       !> (3, 0:iterations): ||r||, ||r|| / reference and |du . r| per residual evaluation
       real(dp), allocatable :: iteration_log(:, :)
-      real(dp), allocatable :: displacement(:, :)   !! (3, n_nodes)
+      !> (3, n_nodes) the reported displacements: the total ones less the reference of the last
+      !> RESET_DISPLACEMENT step (frix_analysis_state's reported_displacement), what every
+      !> writer reports as `displacement`
+      real(dp), allocatable :: displacement(:, :)
+      real(dp), allocatable :: total_displacement(:, :)      !! (3, n_nodes) the total displacements
+      !> (3, n_nodes) the reference taken by the last RESET_DISPLACEMENT step; unallocated when
+      !> no step has taken one (then `displacement` is the total)
+      real(dp), allocatable :: reference_displacement(:, :)
       real(dp), allocatable :: reaction(:, :)       !! (3, n_nodes), zero on free equations
       logical, allocatable :: constrained(:, :)     !! (3, n_nodes) equations with a Dirichlet condition
       !> integration points whose law flags them as yielding in this increment (history

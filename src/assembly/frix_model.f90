@@ -74,6 +74,9 @@ module frix_model
       integer :: path_node = 0            !! CONTROL Path: internal number of the driving node
       integer :: path_component = 0       !! its driven component, 1 = x, 2 = y, 3 = z
       real(dp) :: path_target = 0.0_dp    !! the displacement [length] at which the step ends
+      !> RESET_DISPLACEMENT: the displacements reported from this step on are measured from the
+      !> state at its start, u_reported = u_total - u_reference (frix_analysis_state)
+      logical :: reset_displacement = .false.
    end type step_t
 
    type :: solver_controls_t

@@ -185,7 +185,8 @@ contains
       model%curves = curves(1:n_curves)
    end subroutine read_curves
 
-   !> `STEP <n> NUMSTEP <k> [CONTROL Load|Displacement] [MAXITER m]`, numbered 1, 2, ...
+   !> `STEP <n> NUMSTEP <k> [CONTROL Load|Displacement|Path ...] [MAXITER m] [RESET_DISPLACEMENT]`,
+   !> numbered 1, 2, ...
    subroutine read_steps(reader, model)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
@@ -235,6 +236,9 @@ contains
                   position = position + 1
                   call reader%take_integer(line, position, 'MAXITER', step%max_iterations, ok)
                   call require(reader, ok, step%max_iterations >= 1, line, position - 1, 'MAXITER must be at least 1')
+               case ('RESET_DISPLACEMENT')
+                  position = position + 1
+                  step%reset_displacement = .true.
                case default
                   call reader%report(line, position, 'unknown keyword in STEPS')
                   ok = .false.

@@ -21,7 +21,7 @@ module frix_driver
    use frix_model, only: model_t
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
-                                  restore_state
+                                  restore_state, take_displacement_reference
    use frix_newton_solver, only: newton_context_t, path_constraint_t, setup_newton
    use frix_augmentation, only: solve_augmented
    use frix_newton_report, only: newton_report_t
@@ -224,6 +224,10 @@ contains
       logical :: repeat
 
       call begin_step(model, step, first_increment, state, control)
+      if (model%steps(step)%reset_displacement .and. first_increment == 0) then
+         call reset_displacements(step, state, output, quiet, error)
+         if (allocated(error)) return
+      end if
       do while (state%committed_time < control%step_end - 1.0e-12_dp .and. .not. control%target_reached)
          if (stop_requested()) then
             call stopped_error(step, output, state, error)
@@ -256,6 +260,23 @@ contains
          ': the displacement at '//equation_label(model, control%path%equation)//' reached its target '// &
          time_text(model%steps(step)%path_target)
    end subroutine run_step
+
+   !> RESET_DISPLACEMENT at the start of step `step`: the converged state becomes the reference
+   !> of the reported displacements (a restart within the step reads it from the results file
+   !> instead); one line on the terminal and in the listing says so.
+   subroutine reset_displacements(step, state, output, quiet, error)
+      integer, intent(in) :: step
+      type(analysis_state_t), intent(inout) :: state
+      type(results_output_t), intent(inout) :: output
+      logical, intent(in) :: quiet
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: note
+      call take_displacement_reference(state)
+      note = 'step '//to_string(step)//': displacements reported from t = '//time_text(state%committed_time)// &
+             ' (RESET_DISPLACEMENT)'
+      if (.not. quiet) write (*, '(a)') 'frix: '//note
+      call output%write_note(note, error)
+   end subroutine reset_displacements
 
    !> The increment control of `step` at its start (see the module head).
    subroutine begin_step(model, step, first_increment, state, control)

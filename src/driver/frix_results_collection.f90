@@ -11,7 +11,7 @@ module frix_results_collection
    use frix_strings, only: to_string, to_lower
    use frix_finite_check, only: first_non_finite
    use frix_model, only: model_t
-   use frix_analysis_state, only: analysis_state_t
+   use frix_analysis_state, only: analysis_state_t, reported_displacement
    use frix_newton_solver, only: newton_context_t
    use frix_newton_report, only: newton_report_t
    use frix_assembler, only: assemble_internal
@@ -48,7 +48,9 @@ contains
                                                  report%relative_norms(0:report%iterations), &
                                                  report%energy_norms(0:report%iterations)], &
                                                 [report%iterations + 1, 3]))
-      results%displacement = reshape(state%u, [3, n_nodes])
+      results%displacement = reported_displacement(state)
+      results%total_displacement = reshape(state%committed_u, [3, n_nodes])
+      if (allocated(state%reference_u)) results%reference_displacement = reshape(state%reference_u, [3, n_nodes])
       results%reaction = reshape(context%reactions, [3, n_nodes])
       results%constrained = reshape(context%fixed, [3, n_nodes])
       call check_nodal_finite(model, results, 'displacement', state%u, error)

@@ -36,6 +36,7 @@ module frix_results_output
    contains
       procedure :: open => output_open
       procedure :: write_increment => output_write_increment
+      procedure :: write_note => output_write_note
       procedure :: close => output_close
    end type results_output_t
 
@@ -208,6 +209,10 @@ contains
       real(dp), allocatable :: nodal(:, :), cell(:, :)
       integer :: n_nodes, f
       n_nodes = model%mesh%n_nodes
+      ! with a RESET_DISPLACEMENT reference, `displacement` is the reported one: the total too,
+      ! for warping by the deformed shape
+      if (allocated(results%reference_displacement)) &
+         call self%vtk%add_point_field('total_displacement', results%total_displacement)
       if (results%has_contact) then
          call self%vtk%add_point_field('contact_pressure', reshape(results%contact_pressure, [1, n_nodes]))
          call self%vtk%add_point_field('contact_traction', results%contact_traction)
@@ -264,9 +269,16 @@ contains
       do f = 1, size(results%point_fields)
          call self%hdf5%add_point_field(to_lower(results%point_fields(f)%name), results%point_fields(f)%values)
       end do
-      call self%hdf5%write_increment(results%step, results%increment, results%time, results%displacement, &
-                                     results%reaction, results%stress, results%strain, results%alpha, &
-                                     results%history, error)
+      if (allocated(results%reference_displacement)) then
+         call self%hdf5%write_increment(results%step, results%increment, results%time, results%displacement, &
+                                        results%reaction, results%stress, results%strain, results%alpha, &
+                                        results%history, error, results%total_displacement, &
+                                        results%reference_displacement)
+      else
+         call self%hdf5%write_increment(results%step, results%increment, results%time, results%displacement, &
+                                        results%reaction, results%stress, results%strain, results%alpha, &
+                                        results%history, error)
+      end if
    end subroutine write_hdf5
 
    !> A POS3D result step: displacements, Gauss stresses, and as nodal scalars the contact
@@ -356,7 +368,7 @@ contains
                node = table%nodes(i)
                write (self%contact_unit, contact_row_format, iostat=stat) results%step, results%increment, &
                   results%time, table%pair_id, p, &
-                  model%mesh%node_ids(node), model%mesh%coords(:, node) + results%displacement(:, node), &
+                  model%mesh%node_ids(node), model%mesh%coords(:, node) + results%total_displacement(:, node), &
                   table%values(1:6, i), nint(table%values(7, i)), table%values(8:10, i)
                if (stat /= 0) then
                   call fatal_error(error, 'frix: cannot write the contact CSV file')
@@ -367,6 +379,15 @@ contains
       end do
       flush (self%contact_unit)
    end subroutine write_contact_csv
+
+   !> A note in the listing (a `#` comment line between increments), e.g. where the reported
+   !> displacements are measured from; nothing without a listing.
+   subroutine output_write_note(self, text, error)
+      class(results_output_t), intent(inout) :: self
+      character(len=*), intent(in) :: text
+      type(error_t), allocatable, intent(out) :: error
+      if (self%listing%is_open()) call self%listing%write_comment(text, error)
+   end subroutine output_write_note
 
    subroutine output_close(self, error)
       class(results_output_t), intent(inout) :: self

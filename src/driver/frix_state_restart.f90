@@ -1,6 +1,6 @@
 !> The analysis state from the HDF5 file of an earlier run (docs/hdf5-layout.md, "Restart"):
-!> the committed displacements, EAS parameters and material history of one converged
-!> increment, and the committed slip history of every contact pass (`contact/pass<p>_history`)
+!> the committed displacements (with the RESET_DISPLACEMENT reference, if any), EAS parameters
+!> and material history of one converged increment, and the committed slip history of every contact pass (`contact/pass<p>_history`)
 !> with the multipliers of augmented passes (`contact/pass<p>_multiplier`).
 !> What is read here is what frix_results_collection puts into every increment's results.
 module frix_state_restart
@@ -32,7 +32,8 @@ contains
       type(augmentation_t) :: settings
       integer :: p
       time = 0.0_dp
-      call read_restart(path, step, increment, time, state%u, state%alpha, state%history, error, model%mesh)
+      call read_restart(path, step, increment, time, state%u, state%alpha, state%history, error, model%mesh, &
+                        state%reference_u)
       if (allocated(error)) return
       state%time = time
       call commit_solution(state)

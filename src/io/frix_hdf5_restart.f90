@@ -1,6 +1,7 @@
 !> Reading back an HDF5 results file (layout in docs/hdf5-layout.md, written by
 !> frix_hdf5_results): the list of its complete increments, the restart state of one increment
-!> (time, displacements, EAS parameters, material history), checked against the current
+!> (time, total displacements and their RESET_DISPLACEMENT reference, EAS parameters, material
+!> history), checked against the current
 !> model's array shapes and mesh, and any real array of an increment (e.g. the contact state).
 !> An increment group without the `complete` attribute (a run stopped while writing it) is
 !> ignored.
@@ -125,7 +126,11 @@ contains
    !> The arrays come sized for the current model (as `analysis_state_t` allocates them); the
    !> file's mesh must have as many nodes and elements and the stored arrays the same shapes.
    !> With `mesh`, the connectivity must also be identical. Nothing is changed on error.
-   subroutine read_restart(path, selector_step, selector_increment, time, u, alpha, history, error, mesh)
+   !> The total displacements are `total_displacement` where the increment has it (written after
+   !> a RESET_DISPLACEMENT step, with `reference_displacement`, returned in `reference`), else
+   !> `displacement`; `reference` comes back unallocated when the increment has none.
+   subroutine read_restart(path, selector_step, selector_increment, time, u, alpha, history, error, mesh, &
+                           reference)
       character(len=*), intent(in) :: path
       integer, intent(in) :: selector_step, selector_increment
       real(dp), intent(inout) :: time             !! pseudo time of the increment
@@ -134,24 +139,29 @@ contains
       real(dp), intent(inout) :: history(:, :, :) !! (n_state, n_points, n_elements)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t), intent(in), optional :: mesh  !! the current mesh, to compare the connectivity
+      real(dp), allocatable, intent(inout), optional :: reference(:)  !! (3 n_nodes) node-major
       type(hdf5_location_t) :: file
       call open_for_reading(path, file, error)
       if (allocated(error)) return
-      call read_restart_open(file, selector_step, selector_increment, time, u, alpha, history, error, mesh)
+      call read_restart_open(file, selector_step, selector_increment, time, u, alpha, history, error, mesh, &
+                             reference)
       call close_file(file, error)
       if (allocated(error)) error%message = 'restart from step '//to_string(selector_step)//' increment '// &
                                             to_string(selector_increment)//': '//error%message
    end subroutine read_restart
 
-   subroutine read_restart_open(file, selector_step, selector_increment, time, u, alpha, history, error, mesh)
+   subroutine read_restart_open(file, selector_step, selector_increment, time, u, alpha, history, error, mesh, &
+                                reference)
       type(hdf5_location_t), intent(in) :: file
       integer, intent(in) :: selector_step, selector_increment
       real(dp), intent(inout) :: time, u(:), alpha(:, :), history(:, :, :)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t), intent(in), optional :: mesh
+      real(dp), allocatable, intent(inout), optional :: reference(:)
       type(hdf5_location_t) :: group
-      real(dp), allocatable :: new_u(:, :), new_alpha(:, :), new_history(:, :, :)
+      real(dp), allocatable :: new_u(:, :), new_alpha(:, :), new_history(:, :, :), new_reference(:, :)
       real(dp) :: new_time
+      logical :: has_reference
 
       if (mod(size(u), 3) /= 0) then
          call fatal_error(error, 'the displacement vector has '//to_string(size(u))//' entries, not 3 per node')
@@ -163,7 +173,16 @@ contains
       if (allocated(error)) return
       allocate (new_u(3, size(u)/3), new_alpha(size(alpha, 1), size(alpha, 2)), &
                 new_history(size(history, 1), size(history, 2), size(history, 3)))
-      call read_dataset(group, 'displacement', new_u, error)
+      call link_exists(group, 'total_displacement', has_reference, error)
+      if (.not. allocated(error)) then
+         if (has_reference) then
+            allocate (new_reference(3, size(u)/3))
+            call read_dataset(group, 'total_displacement', new_u, error)
+            if (.not. allocated(error)) call read_dataset(group, 'reference_displacement', new_reference, error)
+         else
+            call read_dataset(group, 'displacement', new_u, error)
+         end if
+      end if
       if (.not. allocated(error)) call read_dataset(group, 'alpha', new_alpha, error)
       if (.not. allocated(error)) call read_dataset(group, 'history', new_history, error)
       call close_group_after(group, error)
@@ -172,6 +191,10 @@ contains
       u = reshape(new_u, [size(u)])
       alpha = new_alpha
       history = new_history
+      if (present(reference)) then
+         if (allocated(reference)) deallocate (reference)
+         if (has_reference) reference = reshape(new_reference, [size(u)])
+      end if
    end subroutine read_restart_open
 
    !> The file's mesh must have n_nodes nodes and n_elements elements (and, with `mesh`, the

@@ -10,6 +10,8 @@
 !>   /increments/<NNNNNN>/  running number 000001, 000002, ... in the order written;
 !>       attributes step, increment, time, complete (= 1, written last)
 !>       displacement, reaction (n_nodes, 3); stress, strain (n_elements, n_points, 6) Cauchy
+!>       (displacement: the reported one; after a RESET_DISPLACEMENT step also
+!>       total_displacement and reference_displacement (n_nodes, 3), the restart's state)
 !>       stress / strain with engineering shears, frix Voigt order xx yy zz xy xz yz;
 !>       alpha (n_elements, max_eas); history (n_elements, n_points, n_state);
 !>       optional group contact/ with the caller's named arrays.
@@ -308,17 +310,20 @@ contains
    !> Write one converged increment as group /increments/<NNNNNN> and flush the file. The
    !> contact arrays added since the previous increment are written with it and then dropped.
    subroutine results_write_increment(self, step, increment, time, displacement, reaction, stress, strain, &
-                                      alpha, history, error)
+                                      alpha, history, error, total, reference)
       class(hdf5_results_t), intent(inout) :: self
       integer, intent(in) :: step, increment      !! step number and increment number within the step
       real(dp), intent(in) :: time                !! pseudo time (load factor) of the increment
-      real(dp), intent(in) :: displacement(:, :)  !! (3, n_nodes) total displacements
+      real(dp), intent(in) :: displacement(:, :)  !! (3, n_nodes) reported displacements
       real(dp), intent(in) :: reaction(:, :)      !! (3, n_nodes) reactions, zero at free DOFs
       real(dp), intent(in) :: stress(:, :, :)     !! (6, n_points, n_elements) Cauchy, frix Voigt
       real(dp), intent(in) :: strain(:, :, :)     !! (6, n_points, n_elements) engineering shears
       real(dp), intent(in) :: alpha(:, :)         !! (max EAS parameters, n_elements)
       real(dp), intent(in) :: history(:, :, :)    !! (n_state, n_points, n_elements)
       type(error_t), allocatable, intent(out) :: error
+      !> (3, n_nodes) after a RESET_DISPLACEMENT step: the total displacements and their
+      !> reference (displacement = total - reference), both or neither
+      real(dp), intent(in), optional :: total(:, :), reference(:, :)
       type(hdf5_location_t) :: increments, group
 
       if (self%file%id < 0) then
@@ -327,13 +332,24 @@ contains
       end if
       call check_increment_shapes(self, displacement, reaction, stress, strain, alpha, history, error)
       if (allocated(error)) return
+      if (present(total) .neqv. present(reference)) then
+         call fatal_error(error, 'HDF5 output: the total displacements and their reference go together')
+         return
+      end if
+      if (present(total)) then
+         if (any(shape(total) /= shape(displacement)) .or. any(shape(reference) /= shape(displacement))) then
+            call fatal_error(error, 'HDF5 output: the total displacements and their reference must be (3, '// &
+                             to_string(self%n_nodes)//')')
+            return
+         end if
+      end if
 
       call open_group(self%file, 'increments', increments, error)
       if (allocated(error)) return
       call create_group(increments, increment_group_name(self%n_increments + 1), group, error)
       if (.not. allocated(error)) then
          call write_increment_group(self, group, step, increment, time, displacement, reaction, stress, strain, &
-                                    alpha, history, error)
+                                    alpha, history, error, total, reference)
          call close_group_after(group, error)
       end if
       call close_group_after(increments, error)
@@ -375,7 +391,7 @@ contains
    end subroutine check_increment_shapes
 
    subroutine write_increment_group(self, group, step, increment, time, displacement, reaction, stress, strain, &
-                                    alpha, history, error)
+                                    alpha, history, error, total, reference)
       type(hdf5_results_t), intent(in) :: self
       type(hdf5_location_t), intent(in) :: group
       integer, intent(in) :: step, increment
@@ -383,6 +399,7 @@ contains
       real(dp), intent(in) :: displacement(:, :), reaction(:, :), stress(:, :, :), strain(:, :, :)
       real(dp), intent(in) :: alpha(:, :), history(:, :, :)
       type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: total(:, :), reference(:, :)
 
       call write_attribute(group, 'step', step, error)
       if (allocated(error)) return
@@ -392,6 +409,11 @@ contains
       if (allocated(error)) return
       call write_dataset(group, 'displacement', displacement, error)
       if (allocated(error)) return
+      if (present(total) .and. present(reference)) then
+         call write_dataset(group, 'total_displacement', total, error)
+         if (.not. allocated(error)) call write_dataset(group, 'reference_displacement', reference, error)
+         if (allocated(error)) return
+      end if
       call write_dataset(group, 'reaction', reaction, error)
       if (allocated(error)) return
       call write_dataset(group, 'stress', stress, error)

@@ -80,6 +80,22 @@ DECK
     fi
 }
 
+# check_table CSV WHAT PYTHON_CHECK: reads a script's --table CSV output into columns `c`
+# (numpy float arrays by column name) and runs the Python check on them: passes if it raises nothing.
+check_table() {
+    local message
+    if message=$("$PYTHON" - "$1" "$3" <<'PY' 2>&1
+import csv, sys
+import numpy as np
+with open(sys.argv[1]) as stream:
+    rows = list(csv.DictReader(stream))
+c = {key: np.array([float(row[key]) for row in rows]) for key in rows[0]}
+exec(sys.argv[2])
+print("ok")
+PY
+    ); then pass "$2"; else fail "$2: $message"; fi
+}
+
 # check_png FILE WHAT: a PNG signature, an IHDR with width and height >= 200 px, at least
 # 5 kB, and more than 20 distinct colours (a plot, not a blank canvas).
 check_png() {
