@@ -54,7 +54,8 @@ and a node set, a point as a node set of one node):
      surcharge (the part of soil_top with x <= a_box: the strip 0.6 wide over the pipe),
      soil_z0 (z = 0), soil_slope (the inclined face), soil_toe_face (z = 6.5 below the toe),
      cavity (the soil's face of the interface), pipe_outer, pipe_outer_soil (the faces of
-     pipe_outer with z <= 6.5: the contact slave), pipe_inner, pipe_sym (x = 0, crown and
+     pipe_outer whose nodes all lie inside the soil, z <= z_end(y): the contact slave;
+     coarse: z <= 6.0), pipe_inner, pipe_sym (x = 0, crown and
      invert edges of the wall), pipe_z0, pipe_z13
   0D crown_z2.5, invert_z2.5, springline_z2.5 (pipe outer surface, z = 2.5),
      crown_z6, invert_z6 (z = 6.0, where the crown is about to leave the slope face, at
@@ -247,7 +248,7 @@ def classify_pipe(mesh, faces):
             groups["pipe_inner"].append(f)
         elif all(abs(v - B) < 1e-7 for v in r):
             groups["pipe_outer"].append(f)
-            if max(zs) < Z_TOE + EPS:
+            if all(q[2] <= z_end(q[1]) + EPS for q in p):     # every node inside the soil
                 groups["pipe_outer_soil"].append(f)
         else:
             raise RuntimeError("unclassified pipe face %s" % (p,))
@@ -350,7 +351,8 @@ HEADER = """==================================================================
  Supports: u_x = 0 on x = 0 (soil and pipe) and on the far side x = 3; soil bottom fixed;
  u_z = 0 at z = 0 (soil and pipe: the buried line continues) and on the face below the toe;
  pipe clamped at z = 13.
- Contact pipe_outer_soil (slave, z <= 6.5) / cavity, zero initial gap: {contact}
+ Contact pipe_outer_soil (slave: the pipe's outer faces inside the soil) / cavity, zero gap:
+ {contact}
  Step 1: soil weight (geostatic, pipe in place, no pressure, no surcharge).
  Step 2: internal pressure 9.0 on the whole inner surface and the surcharge 1e-3 MN/m
  (the seed's 1000 N/m) as q = 1.6667e-3 MPa on the strip x <= 0.3 (0.6 wide) over
