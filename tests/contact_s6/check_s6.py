@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Check one S6(b) run (pipe crossing a slope, docs/verification/s6.md).
 
-usage: check_s6.py OUTDIR BASE [--reference FILE] [--end T] [--plastic]
+usage: check_s6.py OUTDIR BASE [--reference FILE] [--end T] [--plastic] [--axially-free]
 
 Checks, each printing PASS/FAIL:
 - the run reached t = END (last row of <BASE>_history.csv; default 3, the 10 x load);
@@ -16,7 +16,9 @@ Checks, each printing PASS/FAIL:
 - the elastic hoop response in the open span (z = 9.5, away from the soil and the clamp): the
   change of (crown u_y - invert u_y)/2 and of the springline u_x from t = 1 to t = 2 against
   Lame's u_r(b) of the tube in plane strain at p = 9 (Timoshenko & Goodier ch. 4; nu = 0.3):
-  1.5912e-4, within 2 % (measured -1.0 %: the restrained pipe is not exactly in plane strain);
+  1.5912e-4, within 2 % (measured -1.05 %, see s6.md); with --axially-free (the variant
+  whose pipe end z = 0 is free, so friction alone restrains it axially) between that value
+  and the open-ends value 1.7486e-4 (sigma_z = 0), each with a 2 % margin;
 - the history columns at t = 2 and, when the run goes there, at t = 3 against the frix
   regression values in FILE (1e-6 of the largest value of the row);
 - with --plastic: at the last increment every integration point of the pipe has yielded
@@ -44,6 +46,13 @@ def lame_ur_b(p, a, b, young, nu):
     big_a = p * a * a / (b * b - a * a)
     big_b = p * a * a * b * b / (b * b - a * a)
     return (1 + nu) / young * ((1 - 2 * nu) * big_a * b + big_b / b)
+
+
+def lame_ur_b_open(p, a, b, young, nu):
+    """u_r(b) of a tube with open ends (sigma_z = 0) under internal pressure p (ibid.)."""
+    big_a = p * a * a / (b * b - a * a)
+    big_b = p * a * a * b * b / (b * b - a * a)
+    return ((1 - nu) * big_a * b + (1 + nu) * big_b / b) / young
 
 
 failures = []
@@ -83,6 +92,9 @@ def main():
     ap.add_argument("--reference")
     ap.add_argument("--end", type=float, default=3.0)
     ap.add_argument("--plastic", action="store_true")
+    ap.add_argument("--axially-free", action="store_true",
+                    help="the pipe's end z = 0 is free axially: the open-span hoop displacement "
+                         "lies between the plane-strain and the open-ends (sigma_z = 0) values")
     args = ap.parse_args()
     out, base = args.outdir, args.base
     rows = history(os.path.join(out, base + "_history.csv"))
@@ -125,10 +137,16 @@ def main():
             return float(r2[col[name]]) - (0.0 if reset else float(r1[col[name]]))
         d_vert = 0.5 * (change("crown_z9.5") - change("invert_z9.5"))
         d_hor = change("springline_z9.5")
+        free = lame_ur_b_open(PRESSURE, geo.A_IN, geo.B, 205000.0, 0.3)
         for what, value in (("half the vertical diameter change", d_vert), ("springline u_x", d_hor)):
-            check(abs(value / lame - 1) <= 0.02,
-                  "z = 9.5, t = 1 -> 2: %s %.6e, Lame plane strain %.6e (%+.2f %%, tolerance 2 %%)"
-                  % (what, value, lame, 100 * (value / lame - 1)))
+            if args.axially_free:
+                check(0.98 * lame <= value <= 1.02 * free,
+                      "z = 9.5, t = 1 -> 2: %s %.6e between Lame plane strain %.6e and open ends "
+                      "%.6e (2 %% margins)" % (what, value, lame, free))
+            else:
+                check(abs(value / lame - 1) <= 0.02,
+                      "z = 9.5, t = 1 -> 2: %s %.6e, Lame plane strain %.6e (%+.2f %%, tolerance 2 %%)"
+                      % (what, value, lame, 100 * (value / lame - 1)))
 
     if args.reference:
         ref = {}
