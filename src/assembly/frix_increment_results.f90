@@ -27,6 +27,9 @@ module frix_increment_results
       real(dp), allocatable :: multiplier(:)
       !> the tangential multipliers (3, n) of a pass with augmented friction, unallocated otherwise
       real(dp), allocatable :: tangential_multiplier(:, :)
+      !> an augmented pass's committed factors on eps_N and eps_T (penalty growth; restart
+      !> data), unallocated otherwise
+      real(dp), allocatable :: penalty_scale(:)
    end type contact_pass_results_t
 
    type :: increment_results_t

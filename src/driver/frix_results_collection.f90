@@ -171,6 +171,8 @@ contains
             call get_contact_history(state%contact, p, table%history)
             if (augmented_pass(model, pair)) table%multiplier = state%contact%passes(p)%committed_multiplier
             if (augmented_pass(model, pair)) then
+               table%penalty_scale = [state%contact%passes(p)%committed_normal_scale, &
+                                      state%contact%passes(p)%committed_tangential_scale]
                if (model%contact_pairs(pair)%parameters%tangential_augmented) &
                   table%tangential_multiplier = state%contact%passes(p)%committed_tangential_multiplier
             end if
