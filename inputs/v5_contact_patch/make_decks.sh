@@ -70,5 +70,5 @@ augmented() {  # source target epsn pentol
   sed "s/EPSN 1e8 (penetration p\/EPSN = 1e-6/METHOD Augmented, EPSN $3, PENTOL $4 (penetration at most $4/; s/EPSN 1.0e8 GAPTOL/METHOD Augmented EPSN $3 PENTOL $4 GAPTOL/" "$1.dck" > "$2.dck"
 }
 augmented v5_u3_2pass v5_u3_2pass_augmented 1.0e8 1.0e-11
-augmented v5_u3_2pass v5_u3_2pass_augmented_eps1e7 1.0e7 1.0e-12
+augmented v5_u3_2pass v5_u3_2pass_augmented_eps1e7 1.0e7 1.0e-11
 augmented v5_u3_slave_upper_1pass v5_u3_slave_upper_1pass_augmented 1.0e8 1.0e-11

@@ -1,7 +1,9 @@
 !> The multipliers of augmented Lagrangian contact (METHOD Augmented,
 !> frix_augmented_normal_law; TMETHOD Augmented for friction) in the global system: after a
-!> converged Newton solution of an increment, the largest penetration of every augmented pass
-!> against its tolerance (and, with augmented friction, the largest elastic slip
+!> converged Newton solution of an increment, the largest |g| of the pressed nodes of every
+!> augmented pass against its tolerance (a pressed node has g = 0 at the multipliers' fixed
+!> point: a penetration, or a gap that opened while lambda still presses the node, is a
+!> violation either way) (and, with augmented friction, the largest elastic slip
 !> |t - lambda_T| / eps_T of its sticking nodes against the stick tolerance), and Uzawa's
 !> update lambda <- p_N = max(0, lambda + eps_N (-g)), lambda_T <- t of every slave node
 !> (Simo & Laursen, Comput. Struct. 42 (1992) 97-116; Laursen & Simo, IJNME 36 (1993)
@@ -44,7 +46,7 @@ module frix_contact_augmentation
    !> augmented passes.
    type :: penetration_check_t
       logical :: within = .true.        !! every active node's penetration (slip) within its tolerance
-      real(dp) :: penetration = 0.0_dp  !! the largest ratio's penetration -g or elastic slip (length)
+      real(dp) :: penetration = 0.0_dp  !! the largest ratio's |g| or elastic slip (length)
       real(dp) :: tolerance = 0.0_dp    !! its pass's tolerance (length)
       integer :: node = 0               !! its slave node (internal number), 0: none active
       integer :: n_over = 0             !! active nodes beyond their tolerance
@@ -78,7 +80,7 @@ contains
       end do
    end function max_augmentations
 
-   !> The penetrations of the active slave nodes of the augmented passes at the last
+   !> The |g| (penetration or opening) of the active slave nodes of the augmented passes at the last
    !> evaluation, against each pass's tolerance (given, or default_tolerance_fraction times
    !> its master's mean face size), and with augmented friction the elastic slips
    !> |t - (I - n n) lambda_T| / eps_T of the sticking nodes against the stick tolerance (the
@@ -101,7 +103,7 @@ contains
             if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
             do i = 1, size(pass%slave_nodes)
                if (pass%result(i)%status == contact_open) cycle
-               call compare(pass%slave_nodes(i), -pass%result(i)%gap, tolerance, .false.)
+               call compare(pass%slave_nodes(i), abs(pass%result(i)%gap), tolerance, .false.)
                if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
                   call compare(pass%slave_nodes(i), &
                                elastic_slip(pass, i, pass%tangential_scale*parameters%tangential_penalty), &
@@ -195,7 +197,7 @@ contains
             slip = 0.0_dp
             do i = 1, size(pass%slave_nodes)
                if (pass%result(i)%status == contact_open) cycle
-               penetration = max(penetration, -pass%result(i)%gap)
+               penetration = max(penetration, abs(pass%result(i)%gap))
                if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
                   slip = max(slip, elastic_slip(pass, i, pass%tangential_scale*parameters%tangential_penalty))
             end do

@@ -1,6 +1,6 @@
 !> Augmented Lagrangian contact in the increment loop (docs/contact.md, "Augmented
 !> Lagrangian"): an increment is solved by Newton with the multipliers held, then, while an
-!> augmented pass has an active slave node whose penetration exceeds its tolerance, the
+!> augmented pass has an active slave node whose |gap| exceeds its tolerance, the
 !> multipliers are updated by Uzawa's rule (frix_contact_augmentation) and the increment is
 !> solved again from where the last solution ended, at most MAXAUG times (the largest over
 !> the pairs). The Uzawa iteration is the nested one of Simo & Laursen (Comput. Struct. 42
@@ -73,7 +73,7 @@ contains
       if (.not. check%within .and. .not. context%quiet) &
          write (*, '(2x,a)') 'augmentation limit ('//to_string(limit)//') reached: '// &
             to_string(check%n_over)//' nodes beyond the tolerance, largest '// &
-            trim(merge('stick slip ', 'penetration', check%slip))//' '// &
+            trim(merge('stick slip', '|gap|     ', check%slip))//' '// &
             to_string(check%penetration)//' (tolerance '//to_string(check%tolerance)//') at node '// &
             to_string(model%mesh%node_ids(check%node))//'; the increment is accepted'
    end subroutine solve_augmented
@@ -88,7 +88,7 @@ contains
       logical, intent(in) :: grown   !! a penalty grew for the next solution
       if (context%quiet) return
       write (*, '(2x,a)') 'augmentation '//to_string(k)//': '//to_string(check%n_over)// &
-         ' nodes beyond the tolerance, largest '//trim(merge('stick slip ', 'penetration', check%slip))// &
+         ' nodes beyond the tolerance, largest '//trim(merge('stick slip', '|gap|     ', check%slip))// &
          ' '//to_string(check%penetration)// &
          ' (tolerance '//to_string(check%tolerance)//') at node '//to_string(model%mesh%node_ids(check%node))// &
          '; largest multiplier change '//to_string(change)//trim(merge('; penalty grown', '               ', grown))
