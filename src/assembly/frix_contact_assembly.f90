@@ -367,13 +367,14 @@ contains
    end subroutine assemble_contact
 
    !> The pair's parameters with eps_N and eps_T times the pass's penalty factors (augmented
-   !> passes whose penalties grew in this increment: frix_contact_augmentation).
+   !> passes whose penalties grew: frix_contact_augmentation's grow_penalties).
    function pass_parameters(pair_parameters, pass) result(parameters)
       type(contact_parameters_t), intent(in) :: pair_parameters
       type(contact_pass_t), intent(in) :: pass
       type(contact_parameters_t) :: parameters
       parameters = pair_parameters
-      if (pass%normal_scale /= 1.0_dp) call parameters%normal%set_penalty(pass%normal_scale*parameters%normal%penalty())
+      if (pass%normal_scale /= 1.0_dp) &
+         call parameters%normal%set_penalty(pass%normal_scale*parameters%normal%penalty())
       if (pass%tangential_scale /= 1.0_dp) &
          parameters%tangential_penalty = pass%tangential_scale*parameters%tangential_penalty
    end function pass_parameters

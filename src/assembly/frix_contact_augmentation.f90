@@ -13,9 +13,9 @@
 !> increment is given up (restore_multipliers).
 !> Penalty growth (the method of multipliers' rule: Bertsekas, *Constrained Optimization and
 !> Lagrange Multiplier Methods*, Academic Press 1982, 2.2; Laursen 2002, 5.3): the nested
-!> iteration reduces the penetration at each augmentation by about the ratio of the bodies'
+!> iteration reduces the gap at each augmentation by about the ratio of the bodies'
 !> stiffness to eps_N, slowly where eps_N is soft. After each augmentation of an increment,
-!> a pass whose largest penetration (largest stick slip) is still beyond its tolerance and
+!> a pass whose largest |g| of a pressed node (largest stick slip) is still beyond its tolerance and
 !> did not fall below growth_rate times the previous augmentation's has eps_N (eps_T)
 !> multiplied by growth_factor for the next solutions, up to growth_limit times the given
 !> value (grow_penalties). The multipliers are updated before, with the penalty of the
@@ -178,7 +178,7 @@ contains
    end function augment_multipliers
 
    !> After an augmentation (module head): for each augmented pass, eps_N's factor grows by
-   !> the pass's growth_factor when its largest penetration is beyond the tolerance and above
+   !> the pass's growth_factor when its largest |g| of a pressed node is beyond the tolerance and above
    !> growth_rate times the previous augmentation's; with augmented friction eps_T's likewise
    !> with the largest stick slip; each up to growth_limit. `grown`: some factor grew.
    subroutine grow_penalties(model, system, grown)

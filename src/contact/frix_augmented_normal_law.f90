@@ -9,9 +9,9 @@
 !> takes. The point is in contact iff lambda + eps_N (-g) > 0. Properties: EPSN (as the
 !> penalty law's), PENTOL (the penetration tolerance, length, > 0; default 1e-5 of the
 !> master's mean face size), MAXAUG (most augmentations per increment, >= 1, default 20),
-!> PENGROW, PENRATE, PENCAP (the penalty growth within an increment of the method of
-!> multipliers: Bertsekas, *Constrained Optimization and Lagrange Multiplier Methods*,
-!> Academic Press 1982, 2.2; frix_contact_augmentation's grow_penalties).
+!> PENGROW, PENRATE, PENCAP (the penalty growth of the method of multipliers: Bertsekas,
+!> *Constrained Optimization and Lagrange Multiplier Methods*, Academic Press 1982, 2.2;
+!> frix_contact_augmentation's grow_penalties).
 module frix_augmented_normal_law
    use frix_kinds, only: dp
    use frix_error, only: error_t, append_error
@@ -27,9 +27,9 @@ module frix_augmented_normal_law
 
    integer, parameter :: default_max_augmentations = 20
    !> Defaults of the penalty growth (Bertsekas 1982, 2.2: beta in [4, 10], gamma = 0.25):
-   !> eps x PENGROW after an augmentation that did not bring the largest penetration (stick
-   !> slip) below PENRATE times the previous one, up to PENCAP times the given eps (1e4: the
-   !> penalty stays 1e4 below the conditioning limit of a penalty given 1e-4 of it;
+   !> eps x PENGROW after an augmentation that did not bring the largest |gap| of a pressed
+   !> node (stick slip) below PENRATE times the previous one, up to PENCAP times the given
+   !> eps (1e4: four decades at most, against the round-off of an ever stiffer system;
    !> docs/contact.md, "Augmented Lagrangian")
    real(dp), parameter :: default_growth_factor = 10.0_dp
    real(dp), parameter :: default_growth_rate = 0.25_dp
