@@ -280,6 +280,7 @@ contains
       integer, allocatable :: patch(:, :)
       integer :: p, i, a, slave, nodes(max_kernel_nodes), n_nodes, n, node, attempt, first_ring
       real(dp) :: touch_normal, touch_tangential
+      type(contact_parameters_t) :: parameters   ! the pair's, with the pass's grown penalties
       logical :: touching_stiffness
 
       touching_stiffness = .false.
@@ -290,17 +291,18 @@ contains
       do p = 1, size(system%passes)
          if (system%passes(p)%tied) cycle   ! frix_tie_constraints
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
-            touch_normal = pair%parameters%normal%stiffness()
+            parameters = pass_parameters(pair%parameters, pass)
+            touch_normal = parameters%normal%stiffness()
             touch_tangential = 0.0_dp
-            if (.not. pair%parameters%friction%frictionless()) &
-               touch_tangential = pair%parameters%tangential_penalty
+            if (.not. parameters%friction%frictionless()) &
+               touch_tangential = parameters%tangential_penalty
             do i = 1, size(pass%slave_nodes)
                slave = pass%slave_nodes(i)
                x_slave = model%mesh%coords(:, slave) + u(3*slave - 2:3*slave)
-               if (pair%parameters%tangential_augmented) lambda_t = pass%tangential_multiplier(:, i)
+               if (parameters%tangential_augmented) lambda_t = pass%tangential_multiplier(:, i)
                if (pass%rigid) then
                   do attempt = 1, 2
-                     call node_plane_contact(pair%parameters, x_slave, pair%plane_point, pair%plane_normal, &
+                     call node_plane_contact(parameters, x_slave, pair%plane_point, pair%plane_normal, &
                                              pass%area(i), pass%anchor_point(:, i), pass%has_anchor(i), &
                                              pass%result(i), force3, tangent3, branch=pass%branch(i), &
                                              friction_scale=system%friction_scale, multiplier=pass%multiplier(i), &
@@ -309,7 +311,7 @@ contains
                      if (.not. slip_reversed(pass, i)) exit
                   end do
                   if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
-                      pass%result(i)%gap <= pair%parameters%gap_tolerance) then
+                      pass%result(i)%gap <= parameters%gap_tolerance) then
                      call add_touching_stiffness(pass%area(i), touch_normal, touch_tangential, &
                                                  pair%plane_normal, [1.0_dp], tangent3)
                   end if
@@ -337,7 +339,7 @@ contains
                end if
                do attempt = 1, 2
                   ! x_anchor_face: the node moved off its anchor's face, the anchor stays a point of that face
-                  call node_face_contact(pair%parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
+                  call node_face_contact(parameters, x_slave, x_face, pass%area(i), pass%anchor_xi(:, i), &
                                          pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
                                          x_anchor_face=x_anchor_face, branch=pass%branch(i), &
                                          friction_scale=system%friction_scale, x_ring=x_ring, patch_faces=patch, &
@@ -346,7 +348,7 @@ contains
                   if (.not. slip_reversed(pass, i)) exit
                end do
                if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
-                   pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= pair%parameters%gap_tolerance) then
+                   pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= parameters%gap_tolerance) then
                   call face_shape_functions(pass%result(i)%xi, shape, d_xi, d_eta)
                   call add_touching_stiffness(pass%area(i), touch_normal, touch_tangential, &
                                               face_normal(x_face, pass%result(i)%xi), [1.0_dp, -shape], tangent(:15, :15))
@@ -363,6 +365,19 @@ contains
          end associate
       end do
    end subroutine assemble_contact
+
+   !> The pair's parameters with eps_N and eps_T times the pass's penalty factors (augmented
+   !> passes whose penalties grew: frix_contact_augmentation's grow_penalties).
+   function pass_parameters(pair_parameters, pass) result(parameters)
+      type(contact_parameters_t), intent(in) :: pair_parameters
+      type(contact_pass_t), intent(in) :: pass
+      type(contact_parameters_t) :: parameters
+      parameters = pair_parameters
+      if (pass%normal_scale /= 1.0_dp) &
+         call parameters%normal%set_penalty(pass%normal_scale*parameters%normal%penalty())
+      if (pass%tangential_scale /= 1.0_dp) &
+         parameters%tangential_penalty = pass%tangential_scale*parameters%tangential_penalty
+   end function pass_parameters
 
    !> PASSES 2: the kernel forces of slave i of pass p (fint entries of its slave and its
    !> master face's 4 nodes; the force on a node is -fint) added to the interface force of
@@ -463,6 +478,8 @@ contains
       do p = 1, size(system%passes)
          system%passes(p)%committed_multiplier = system%passes(p)%multiplier
          system%passes(p)%committed_tangential_multiplier = system%passes(p)%tangential_multiplier
+         system%passes(p)%committed_normal_scale = system%passes(p)%normal_scale
+         system%passes(p)%committed_tangential_scale = system%passes(p)%tangential_scale
          if (system%passes(p)%tied) cycle   ! a tie's foot points never change
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)

@@ -1,7 +1,9 @@
 !> The multipliers of augmented Lagrangian contact (METHOD Augmented,
 !> frix_augmented_normal_law; TMETHOD Augmented for friction) in the global system: after a
-!> converged Newton solution of an increment, the largest penetration of every augmented pass
-!> against its tolerance (and, with augmented friction, the largest elastic slip
+!> converged Newton solution of an increment, the largest |g| of the pressed nodes of every
+!> augmented pass against its tolerance (a pressed node has g = 0 at the multipliers' fixed
+!> point: a penetration, or a gap that opened while lambda still presses the node, is a
+!> violation either way) (and, with augmented friction, the largest elastic slip
 !> |t - lambda_T| / eps_T of its sticking nodes against the stick tolerance), and Uzawa's
 !> update lambda <- p_N = max(0, lambda + eps_N (-g)), lambda_T <- t of every slave node
 !> (Simo & Laursen, Comput. Struct. 42 (1992) 97-116; Laursen & Simo, IJNME 36 (1993)
@@ -9,6 +11,18 @@
 !> (frix_augmentation). The multipliers are committed with the contact state
 !> (frix_contact_assembly's commit_contact) and go back to the committed ones when an
 !> increment is given up (restore_multipliers).
+!> Penalty growth (the method of multipliers' rule: Bertsekas, *Constrained Optimization and
+!> Lagrange Multiplier Methods*, Academic Press 1982, 2.2; Laursen 2002, 5.3): the nested
+!> iteration reduces the gap at each augmentation by about the ratio of the bodies'
+!> stiffness to eps_N, slowly where eps_N is soft. After each augmentation of an increment,
+!> a pass whose largest |g| of a pressed node (largest stick slip) is still beyond its tolerance and
+!> did not fall below growth_rate times the previous augmentation's has eps_N (eps_T)
+!> multiplied by growth_factor for the next solutions, up to growth_limit times the given
+!> value (grow_penalties). The multipliers are updated before, with the penalty of the
+!> solution they come from (lambda <- p_N), so each solution stays an exact equilibrium. The
+!> grown factors are part of the contact state: committed with the increment, so that the
+!> next increment starts from the penalty that converged fast (start_penalty_growth), rolled
+!> back with the multipliers, written to HDF5 and restored by restart.
 module frix_contact_augmentation
    use frix_kinds, only: dp
    use frix_model, only: model_t
@@ -20,7 +34,7 @@ module frix_contact_augmentation
    private
 
    public :: penetration_check_t, check_penetrations, augment_multipliers, restore_multipliers
-   public :: max_augmentations
+   public :: max_augmentations, grow_penalties, start_penalty_growth
 
    !> Default penetration tolerance: this fraction of the master's mean face size (against a
    !> rigid plane: the square root of the slave nodes' mean tributary area) (S1: with
@@ -32,7 +46,7 @@ module frix_contact_augmentation
    !> augmented passes.
    type :: penetration_check_t
       logical :: within = .true.        !! every active node's penetration (slip) within its tolerance
-      real(dp) :: penetration = 0.0_dp  !! the largest ratio's penetration -g or elastic slip (length)
+      real(dp) :: penetration = 0.0_dp  !! the largest ratio's |g| or elastic slip (length)
       real(dp) :: tolerance = 0.0_dp    !! its pass's tolerance (length)
       integer :: node = 0               !! its slave node (internal number), 0: none active
       integer :: n_over = 0             !! active nodes beyond their tolerance
@@ -66,7 +80,7 @@ contains
       end do
    end function max_augmentations
 
-   !> The penetrations of the active slave nodes of the augmented passes at the last
+   !> The |g| (penetration or opening) of the active slave nodes of the augmented passes at the last
    !> evaluation, against each pass's tolerance (given, or default_tolerance_fraction times
    !> its master's mean face size), and with augmented friction the elastic slips
    !> |t - (I - n n) lambda_T| / eps_T of the sticking nodes against the stick tolerance (the
@@ -89,9 +103,10 @@ contains
             if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
             do i = 1, size(pass%slave_nodes)
                if (pass%result(i)%status == contact_open) cycle
-               call compare(pass%slave_nodes(i), -pass%result(i)%gap, tolerance, .false.)
+               call compare(pass%slave_nodes(i), abs(pass%result(i)%gap), tolerance, .false.)
                if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
-                  call compare(pass%slave_nodes(i), elastic_slip(pass, i, parameters%tangential_penalty), &
+                  call compare(pass%slave_nodes(i), &
+                               elastic_slip(pass, i, pass%tangential_scale*parameters%tangential_penalty), &
                                stick_tolerance, .true.)
             end do
          end associate
@@ -162,13 +177,75 @@ contains
       end do
    end function augment_multipliers
 
-   !> The multipliers of the last converged increment (after a failed attempt).
+   !> After an augmentation (module head): for each augmented pass, eps_N's factor grows by
+   !> the pass's growth_factor when its largest |g| of a pressed node is beyond the tolerance and above
+   !> growth_rate times the previous augmentation's; with augmented friction eps_T's likewise
+   !> with the largest stick slip; each up to growth_limit. `grown`: some factor grew.
+   subroutine grow_penalties(model, system, grown)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      logical, intent(out) :: grown
+      type(augmentation_t) :: settings
+      real(dp) :: penetration, slip, tolerance, stick_tolerance
+      integer :: p, i
+      grown = .false.
+      do p = 1, size(system%passes)
+         settings = pass_augmentation(model, system, p)
+         if (.not. settings%augmented) cycle
+         associate (pass => system%passes(p), parameters => model%contact_pairs(system%passes(p)%pair)%parameters)
+            penetration = 0.0_dp
+            slip = 0.0_dp
+            do i = 1, size(pass%slave_nodes)
+               if (pass%result(i)%status == contact_open) cycle
+               penetration = max(penetration, abs(pass%result(i)%gap))
+               if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
+                  slip = max(slip, elastic_slip(pass, i, pass%tangential_scale*parameters%tangential_penalty))
+            end do
+            tolerance = settings%penetration_tolerance
+            if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*surface_size(pass)
+            stick_tolerance = parameters%stick_tolerance
+            if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
+            call grow(pass%normal_scale, penetration, pass%previous_penetration, tolerance)
+            if (parameters%tangential_augmented) call grow(pass%tangential_scale, slip, pass%previous_slip, &
+                                                           stick_tolerance)
+         end associate
+      end do
+   contains
+      subroutine grow(scale, violation, previous, limit)
+         real(dp), intent(inout) :: scale, previous
+         real(dp), intent(in) :: violation, limit
+         if (previous > 0.0_dp .and. violation > limit .and. violation > settings%growth_rate*previous &
+             .and. scale < settings%growth_limit) then
+            scale = min(scale*settings%growth_factor, settings%growth_limit)
+            grown = .true.
+         end if
+         previous = violation
+      end subroutine grow
+   end subroutine grow_penalties
+
+   !> The start of an increment attempt: the penalty factors of the last converged increment,
+   !> and no previous augmentation.
+   subroutine start_penalty_growth(system)
+      type(contact_system_t), intent(inout) :: system
+      integer :: p
+      do p = 1, size(system%passes)
+         system%passes(p)%normal_scale = system%passes(p)%committed_normal_scale
+         system%passes(p)%tangential_scale = system%passes(p)%committed_tangential_scale
+         system%passes(p)%previous_penetration = -1.0_dp
+         system%passes(p)%previous_slip = -1.0_dp
+      end do
+   end subroutine start_penalty_growth
+
+   !> The multipliers and penalty factors of the last converged increment (after a failed
+   !> attempt).
    subroutine restore_multipliers(system)
       type(contact_system_t), intent(inout) :: system
       integer :: p
       do p = 1, size(system%passes)
          system%passes(p)%multiplier = system%passes(p)%committed_multiplier
          system%passes(p)%tangential_multiplier = system%passes(p)%committed_tangential_multiplier
+         system%passes(p)%normal_scale = system%passes(p)%committed_normal_scale
+         system%passes(p)%tangential_scale = system%passes(p)%committed_tangential_scale
       end do
    end subroutine restore_multipliers
 end module frix_contact_augmentation

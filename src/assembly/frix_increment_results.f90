@@ -27,6 +27,12 @@ module frix_increment_results
       real(dp), allocatable :: multiplier(:)
       !> the tangential multipliers (3, n) of a pass with augmented friction, unallocated otherwise
       real(dp), allocatable :: tangential_multiplier(:, :)
+      !> an augmented pass's committed factors on eps_N and eps_T (penalty growth; restart
+      !> data), unallocated otherwise
+      real(dp), allocatable :: penalty_scale(:)
+      !> a contact (not tie) pass: its pair's eps_N and eps_T as given or chosen by frix
+      !> (automatic penalties), and 1 / 0 whether each was automatic; unallocated for a tie
+      real(dp), allocatable :: penalty(:)
    end type contact_pass_results_t
 
    type :: increment_results_t

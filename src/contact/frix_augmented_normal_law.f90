@@ -8,7 +8,10 @@
 !> penetration is the tolerance's, whatever eps_N: eps_N only sets how many augmentations it
 !> takes. The point is in contact iff lambda + eps_N (-g) > 0. Properties: EPSN (as the
 !> penalty law's), PENTOL (the penetration tolerance, length, > 0; default 1e-5 of the
-!> master's mean face size), MAXAUG (most augmentations per increment, >= 1, default 20).
+!> master's mean face size), MAXAUG (most augmentations per increment, >= 1, default 20),
+!> PENGROW, PENRATE, PENCAP (the penalty growth of the method of multipliers: Bertsekas,
+!> *Constrained Optimization and Lagrange Multiplier Methods*, Academic Press 1982, 2.2;
+!> frix_contact_augmentation's grow_penalties).
 module frix_augmented_normal_law
    use frix_kinds, only: dp
    use frix_error, only: error_t, append_error
@@ -23,10 +26,21 @@ module frix_augmented_normal_law
    public :: augmented_normal_law_t, augmented_from_properties, augmented_properties
 
    integer, parameter :: default_max_augmentations = 20
+   !> Defaults of the penalty growth (Bertsekas 1982, 2.2: beta in [4, 10], gamma = 0.25):
+   !> eps x PENGROW after an augmentation that did not bring the largest |gap| of a pressed
+   !> node (stick slip) below PENRATE times the previous one, up to PENCAP times the given
+   !> eps (1e4: four decades at most, against the round-off of an ever stiffer system;
+   !> docs/contact.md, "Augmented Lagrangian")
+   real(dp), parameter :: default_growth_factor = 10.0_dp
+   real(dp), parameter :: default_growth_rate = 0.25_dp
+   real(dp), parameter :: default_growth_limit = 1.0e4_dp
 
    type, extends(penalty_normal_law_t) :: augmented_normal_law_t
       real(dp) :: penetration_tolerance = -1.0_dp   !! length; < 0: the default
       integer :: max_augmentations = default_max_augmentations
+      real(dp) :: growth_factor = default_growth_factor   !! PENGROW >= 1 (1: no growth)
+      real(dp) :: growth_rate = default_growth_rate       !! PENRATE, 0 < . <= 1
+      real(dp) :: growth_limit = default_growth_limit     !! PENCAP >= 1
    contains
       procedure :: active
       procedure :: pressure
@@ -35,10 +49,11 @@ module frix_augmented_normal_law
 
 contains
 
-   !> AUGMENTED's properties: EPSN (the penalty law's), PENTOL (> 0), MAXAUG (>= 1).
+   !> AUGMENTED's properties: EPSN (the penalty law's), PENTOL (> 0), MAXAUG (>= 1), PENGROW
+   !> (>= 1), PENRATE (0 < . <= 1), PENCAP (>= 1).
    function augmented_properties() result(specs)
       type(property_spec_t), allocatable :: specs(:)
-      type(property_spec_t) :: tolerance, limit
+      type(property_spec_t) :: tolerance, limit, growth, rate, cap
       tolerance%name = 'PENTOL'
       tolerance%what = 'PENTOL'
       tolerance%bounded = .true.
@@ -49,8 +64,23 @@ contains
       limit%bounded = .true.
       limit%minimum = 1.0_dp
       limit%bound_message = 'MAXAUG must be at least 1'
+      growth%name = 'PENGROW'
+      growth%what = 'PENGROW'
+      growth%bounded = .true.
+      growth%minimum = 1.0_dp
+      growth%bound_message = 'PENGROW must be at least 1'
+      rate%name = 'PENRATE'
+      rate%what = 'PENRATE'
+      rate%bounded = .true.
+      rate%strict = .true.
+      rate%bound_message = 'PENRATE must be positive'
+      cap%name = 'PENCAP'
+      cap%what = 'PENCAP'
+      cap%bounded = .true.
+      cap%minimum = 1.0_dp
+      cap%bound_message = 'PENCAP must be at least 1'
       specs = penalty_properties()
-      specs = [specs, tolerance, limit]
+      specs = [specs, tolerance, limit, growth, rate, cap]
    end function augmented_properties
 
    !> AUGMENTED from its properties: eps_N as the penalty law reads it, PENTOL, MAXAUG.
@@ -60,7 +90,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       class(normal_contact_law_t), allocatable :: penalty_law
       type(augmented_normal_law_t), allocatable :: augmented
-      real(dp) :: tolerance
+      real(dp) :: tolerance, growth, rate, cap
       integer :: limit
       logical :: found
       call properties%check_names(spec_names(augmented_properties()), error)
@@ -72,6 +102,15 @@ contains
       call properties%take_integer('MAXAUG', limit, found, error, default=default_max_augmentations)
       if (limit < 1) call append_error(error, trim(properties%owner)//': MAXAUG must be at least 1, got '// &
                                        to_string(limit))
+      call properties%take_real('PENGROW', growth, found, error, default=default_growth_factor)
+      if (.not. (growth >= 1.0_dp .and. growth < huge(1.0_dp))) &
+         call append_error(error, trim(properties%owner)//': PENGROW must be >= 1, got '//to_string(growth))
+      call properties%take_real('PENRATE', rate, found, error, default=default_growth_rate)
+      if (.not. (rate > 0.0_dp .and. rate <= 1.0_dp)) &
+         call append_error(error, trim(properties%owner)//': PENRATE must be > 0 and <= 1, got '//to_string(rate))
+      call properties%take_real('PENCAP', cap, found, error, default=default_growth_limit)
+      if (.not. (cap >= 1.0_dp .and. cap < huge(1.0_dp))) &
+         call append_error(error, trim(properties%owner)//': PENCAP must be >= 1, got '//to_string(cap))
       if (allocated(error)) return
       allocate (augmented)
       select type (penalty_law)
@@ -81,6 +120,9 @@ contains
       augmented%name = 'AUGMENTED'
       augmented%penetration_tolerance = tolerance
       augmented%max_augmentations = limit
+      augmented%growth_factor = growth
+      augmented%growth_rate = rate
+      augmented%growth_limit = cap
       call move_alloc(augmented, law)
    end subroutine augmented_from_properties
 
@@ -104,12 +146,15 @@ contains
       end if
    end function pressure
 
-   !> Augmented, with the law's tolerance and limit.
+   !> Augmented, with the law's tolerance, limit and penalty growth.
    pure function augmentation(self) result(settings)
       class(augmented_normal_law_t), intent(in) :: self
       type(augmentation_t) :: settings
       settings%augmented = .true.
       settings%penetration_tolerance = self%penetration_tolerance
       settings%max_augmentations = self%max_augmentations
+      settings%growth_factor = self%growth_factor
+      settings%growth_rate = self%growth_rate
+      settings%growth_limit = self%growth_limit
    end function augmentation
 end module frix_augmented_normal_law

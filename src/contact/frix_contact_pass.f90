@@ -67,6 +67,13 @@ module frix_contact_pass
       !> with augmented friction: the tangential multiplier lambda_T of each slave node (3, n:
       !> force/area, global components), current and committed, as `multiplier`
       real(dp), allocatable :: tangential_multiplier(:, :), committed_tangential_multiplier(:, :)
+      !> augmented passes: the factors on eps_N and eps_T of the current solution (grown by
+      !> frix_contact_augmentation's grow_penalties) and of the last converged increment, and
+      !> the largest |gap| of a pressed node and stick slip (length) of the previous
+      !> augmentation in the increment (< 0: none yet)
+      real(dp) :: normal_scale = 1.0_dp, tangential_scale = 1.0_dp
+      real(dp) :: committed_normal_scale = 1.0_dp, committed_tangential_scale = 1.0_dp
+      real(dp) :: previous_penetration = -1.0_dp, previous_slip = -1.0_dp
    end type contact_pass_t
 
 contains

@@ -31,6 +31,13 @@ module frix_normal_contact_law
       !> face size (frix_contact_augmentation)
       real(dp) :: penetration_tolerance = -1.0_dp
       integer :: max_augmentations = 0   !! Newton solutions after the first, at most
+      !> penalty growth within an increment (method of multipliers, frix_contact_augmentation):
+      !> when an augmentation leaves the largest penetration (stick slip) above `growth_rate`
+      !> times the previous one, the penalty of the next solutions is multiplied by
+      !> `growth_factor` (1: never), up to `growth_limit` times the given one
+      real(dp) :: growth_factor = 1.0_dp
+      real(dp) :: growth_rate = 1.0_dp
+      real(dp) :: growth_limit = 1.0_dp
    end type augmentation_t
 
    type, abstract :: normal_contact_law_t

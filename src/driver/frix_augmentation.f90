@@ -1,11 +1,14 @@
 !> Augmented Lagrangian contact in the increment loop (docs/contact.md, "Augmented
 !> Lagrangian"): an increment is solved by Newton with the multipliers held, then, while an
-!> augmented pass has an active slave node whose penetration exceeds its tolerance, the
+!> augmented pass has an active slave node whose |gap| exceeds its tolerance, the
 !> multipliers are updated by Uzawa's rule (frix_contact_augmentation) and the increment is
 !> solved again from where the last solution ended, at most MAXAUG times (the largest over
 !> the pairs). The Uzawa iteration is the nested one of Simo & Laursen (Comput. Struct. 42
 !> (1992) 97-116): each Newton solution is exact for its multipliers, and each update brings
-!> the penetration down by about the ratio of the interface's stiffness to eps_N. When the
+!> the penetration down by about the ratio of the interface's stiffness to eps_N, and where
+!> that is slow the penalties grow within the increment (the method of multipliers;
+!> frix_contact_augmentation's grow_penalties; the grown penalties carry over to the next
+!> increments). When the
 !> limit is reached with penetrations still beyond tolerance the increment is accepted with a
 !> warning (its equilibrium is converged; only the constraint is loose), as the progress
 !> lines say.
@@ -18,7 +21,7 @@ module frix_augmentation
    use frix_newton_solver, only: newton_context_t, path_constraint_t, solve_increment
    use frix_newton_report, only: newton_report_t
    use frix_contact_augmentation, only: penetration_check_t, check_penetrations, augment_multipliers, &
-                                        max_augmentations
+                                        max_augmentations, grow_penalties, start_penalty_growth
    implicit none
    private
 
@@ -43,6 +46,8 @@ contains
       type(penetration_check_t) :: check
       real(dp) :: change, solve_time
       integer :: k, limit
+      logical :: grown
+      if (state%has_contact) call start_penalty_growth(state%contact)
       call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
       iterations = report%iterations
       if (allocated(error) .or. .not. report%converged .or. .not. state%has_contact) return
@@ -50,9 +55,10 @@ contains
       do k = 1, limit
          check = check_penetrations(model, state%contact)
          if (check%within) return
+         call grow_penalties(model, state%contact, grown)
          change = augment_multipliers(model, state%contact)
          context%n_augmentations = context%n_augmentations + 1
-         call print_augmentation(context, model, k, check, change)
+         call print_augmentation(context, model, k, check, change, grown)
          ! path following: the load factor found is kept as the start (solve_increment's `time`)
          solve_time = state%time
          call solve_increment(model, context, state, solve_time, max_iterations, label//'  aug'//to_string(k), &
@@ -67,23 +73,24 @@ contains
       if (.not. check%within .and. .not. context%quiet) &
          write (*, '(2x,a)') 'augmentation limit ('//to_string(limit)//') reached: '// &
             to_string(check%n_over)//' nodes beyond the tolerance, largest '// &
-            trim(merge('stick slip ', 'penetration', check%slip))//' '// &
+            trim(merge('stick slip', '|gap|     ', check%slip))//' '// &
             to_string(check%penetration)//' (tolerance '//to_string(check%tolerance)//') at node '// &
             to_string(model%mesh%node_ids(check%node))//'; the increment is accepted'
    end subroutine solve_augmented
 
    !> The progress line of augmentation k.
-   subroutine print_augmentation(context, model, k, check, change)
+   subroutine print_augmentation(context, model, k, check, change, grown)
       type(newton_context_t), intent(in) :: context
       type(model_t), intent(in) :: model
       integer, intent(in) :: k
       type(penetration_check_t), intent(in) :: check
       real(dp), intent(in) :: change
+      logical, intent(in) :: grown   !! a penalty grew for the next solution
       if (context%quiet) return
       write (*, '(2x,a)') 'augmentation '//to_string(k)//': '//to_string(check%n_over)// &
-         ' nodes beyond the tolerance, largest '//trim(merge('stick slip ', 'penetration', check%slip))// &
+         ' nodes beyond the tolerance, largest '//trim(merge('stick slip', '|gap|     ', check%slip))// &
          ' '//to_string(check%penetration)// &
          ' (tolerance '//to_string(check%tolerance)//') at node '//to_string(model%mesh%node_ids(check%node))// &
-         '; largest multiplier change '//to_string(change)
+         '; largest multiplier change '//to_string(change)//trim(merge('; penalty grown', '               ', grown))
    end subroutine print_augmentation
 end module frix_augmentation

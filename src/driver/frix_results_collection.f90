@@ -18,6 +18,7 @@ module frix_results_collection
    use frix_material, only: history_name_length
    use frix_increment_results, only: increment_results_t, named_field_t, contact_pass_results_t
    use frix_normal_contact_law, only: augmentation_t
+   use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, &
                                     get_contact_history
    implicit none
@@ -159,6 +160,16 @@ contains
       augmented = settings%augmented
    end function augmented_pass
 
+   !> [eps_N, eps_T, automatic eps_N (1/0), automatic eps_T (1/0)] of a contact pair (the
+   !> HDF5 dataset contact/pass<p>_penalty, docs/hdf5-layout.md).
+   subroutine pair_penalties(parameters, penalty)
+      type(contact_parameters_t), intent(in) :: parameters
+      real(dp), allocatable, intent(out) :: penalty(:)
+      penalty = [parameters%normal%penalty(), parameters%tangential_penalty, &
+                 merge(1.0_dp, 0.0_dp, parameters%normal%automatic_penalty), &
+                 merge(1.0_dp, 0.0_dp, parameters%automatic_tangential_penalty)]
+   end subroutine pair_penalties
+
    subroutine collect_contact(model, state, results, error)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(in) :: state
@@ -171,8 +182,12 @@ contains
             call contact_pass_table(state%contact, p, pair, table%nodes, table%values)
             table%pair_id = model%contact_pairs(pair)%id
             call get_contact_history(state%contact, p, table%history)
+            if (.not. model%contact_pairs(pair)%tied) call pair_penalties(model%contact_pairs(pair)%parameters, &
+                                                                       table%penalty)
             if (augmented_pass(model, pair)) table%multiplier = state%contact%passes(p)%committed_multiplier
             if (augmented_pass(model, pair)) then
+               table%penalty_scale = [state%contact%passes(p)%committed_normal_scale, &
+                                      state%contact%passes(p)%committed_tangential_scale]
                if (model%contact_pairs(pair)%parameters%tangential_augmented) &
                   table%tangential_multiplier = state%contact%passes(p)%committed_tangential_multiplier
             end if

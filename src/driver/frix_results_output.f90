@@ -264,6 +264,11 @@ contains
             if (allocated(results%contact(p)%tangential_multiplier)) &
                call self%hdf5%add_contact_array('pass'//to_string(p)//'_tangential_multiplier', &
                                                 results%contact(p)%tangential_multiplier)
+            if (allocated(results%contact(p)%penalty)) &
+               call self%hdf5%add_contact_array('pass'//to_string(p)//'_penalty', results%contact(p)%penalty)
+            if (allocated(results%contact(p)%penalty_scale)) &
+               call self%hdf5%add_contact_array('pass'//to_string(p)//'_penalty_scale', &
+                                                results%contact(p)%penalty_scale)
          end do
       end if
       do f = 1, size(results%point_fields)

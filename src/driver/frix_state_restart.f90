@@ -1,7 +1,8 @@
 !> The analysis state from the HDF5 file of an earlier run (docs/hdf5-layout.md, "Restart"):
 !> the committed displacements (with the RESET_DISPLACEMENT reference, if any), EAS parameters
-!> and material history of one converged increment, and the committed slip history of every contact pass (`contact/pass<p>_history`)
-!> with the multipliers of augmented passes (`contact/pass<p>_multiplier`).
+!> and material history of one converged increment, and the committed slip history of every
+!> contact pass (`contact/pass<p>_history`) with the multipliers and penalty factors of
+!> augmented passes (`contact/pass<p>_multiplier`, `contact/pass<p>_penalty_scale`).
 !> What is read here is what frix_results_collection puts into every increment's results.
 module frix_state_restart
    use frix_kinds, only: dp
@@ -59,6 +60,17 @@ contains
             end if
             pass%multiplier = values(1, :)
             pass%committed_multiplier = values(1, :)
+            values = reshape([pass%normal_scale, pass%tangential_scale], [1, 2])
+            call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_penalty_scale', values, &
+                                      error)
+            if (allocated(error)) then
+               error%message = 'contact pass '//to_string(p)//': '//error%message
+               return
+            end if
+            pass%normal_scale = values(1, 1)
+            pass%committed_normal_scale = values(1, 1)
+            pass%tangential_scale = values(1, 2)
+            pass%committed_tangential_scale = values(1, 2)
             if (.not. model%contact_pairs(pass%pair)%parameters%tangential_augmented) cycle
             values = pass%tangential_multiplier
             call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_tangential_multiplier', &

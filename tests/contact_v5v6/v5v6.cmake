@@ -100,7 +100,9 @@ set_tests_properties(v5_matching_1pass v5_u3_slave_upper_1pass v5_u3_slave_lower
 # every penetration is below PENTOL, so the two-pass patch-test error no longer follows 1/EPSN
 # (penalty: 5.06e-3 at EPSN 1e8, 5.4e-5 at 1e10). Measured (2026-11): at EPSN 1e8, 4
 # augmentations, 12 Newton iterations (penalty 3), traction error 6.9e-8, stresses 2.2e-8; at
-# EPSN 1e7, 13 augmentations, 35 iterations, 2.0e-7. Bound 1e-6 on both. One pass still fails
+# EPSN 1e7, 6 augmentations, 19 iterations, 6.9e-8 (with the penalty growth and the check of
+# |gap| of every pressed node; 13, 35, 2.0e-7 without either; docs/verification/penalty.md).
+# Bound 1e-6 on both. One pass still fails
 # the patch test whatever the method (node-to-segment): the same band as the penalty one pass.
 foreach(deck v5_u3_2pass_augmented v5_u3_2pass_augmented_eps1e7)
   add_test(NAME ${deck}

@@ -5,7 +5,8 @@
 # to 1e-10 relative: displacements, contact tractions and accumulated slip (without the slip
 # history the restarted run would start from reference anchors with zero slip and differ; with
 # METHOD Augmented also the multipliers, contact/pass1_multiplier and, with TMETHOD Augmented,
-# contact/pass1_tangential_multiplier).
+# contact/pass1_tangential_multiplier, and the grown penalty factors, contact/pass1_penalty_scale:
+# 100 on eps_N and eps_T from step 2 on in restart_s1_augmented.dck).
 set -eu
 frix=$1; deck=$2
 name=$(basename "$deck" .dck)
@@ -19,7 +20,8 @@ def last(path):
     with h5py.File(path, 'r') as f:
         g = f['increments'][sorted(f['increments'])[-1]]
         keys = ['displacement', 'contact/traction', 'contact/slip', 'contact/pressure']
-        keys += [k for k in ('contact/pass1_multiplier', 'contact/pass1_tangential_multiplier') if k in g]
+        keys += [k for k in ('contact/pass1_multiplier', 'contact/pass1_tangential_multiplier',
+                             'contact/pass1_penalty_scale') if k in g]
         return {k: g[k][...] for k in keys}
 ref, got = last(f"{out}/full/{name}.h5"), last(f"{out}/restarted/{name}.h5")
 fail = 0
