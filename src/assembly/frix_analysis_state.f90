@@ -74,8 +74,10 @@ contains
    !> Accept the current iterate as converged.
    subroutine commit_state(state)
       type(analysis_state_t), intent(inout) :: state
+      real(dp) :: dt
+      dt = state%time - state%committed_time
       call commit_solution(state)
-      if (state%has_contact) call commit_contact(state%contact)
+      if (state%has_contact) call commit_contact(state%contact, dt)
    end subroutine commit_state
 
    !> Accept the current time, displacements, EAS parameters and material history (not the

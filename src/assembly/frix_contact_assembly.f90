@@ -471,11 +471,26 @@ contains
       end do
    end subroutine add_touching_stiffness
 
-   !> Accept the current contact state as converged: anchors, accumulated slip, multipliers.
-   subroutine commit_contact(system)
+   !> Accept the current contact state as converged: anchors, accumulated slip, multipliers,
+   !> and the multipliers' rates over the increment of length `dt` (pseudo time): (lambda_n -
+   !> lambda_{n-1}) / dt for a node pressed (lambda > 0) at both ends of the increment, else 0.
+   subroutine commit_contact(system, dt)
       type(contact_system_t), intent(inout) :: system
+      real(dp), intent(in) :: dt
       integer :: p, i
       do p = 1, size(system%passes)
+         associate (pass => system%passes(p))
+            do i = 1, size(pass%multiplier)
+               if (dt > 0.0_dp .and. pass%multiplier(i) > 0.0_dp) then
+                  pass%multiplier_rate(i) = (pass%multiplier(i) - pass%committed_multiplier(i))/dt
+                  pass%tangential_multiplier_rate(:, i) = (pass%tangential_multiplier(:, i) - &
+                                                           pass%committed_tangential_multiplier(:, i))/dt
+               else
+                  pass%multiplier_rate(i) = 0.0_dp
+                  pass%tangential_multiplier_rate(:, i) = 0.0_dp
+               end if
+            end do
+         end associate
          system%passes(p)%committed_multiplier = system%passes(p)%multiplier
          system%passes(p)%committed_tangential_multiplier = system%passes(p)%tangential_multiplier
          system%passes(p)%committed_normal_scale = system%passes(p)%normal_scale

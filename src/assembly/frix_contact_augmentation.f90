@@ -23,6 +23,9 @@
 !> grown factors are part of the contact state: committed with the increment, so that the
 !> next increment starts from the penalty that converged fast (start_penalty_growth), rolled
 !> back with the multipliers, written to HDF5 and restored by restart.
+!> Predictor (PREDICT, predict_multipliers): an increment starts from the committed
+!> multipliers extrapolated with the rates of the last converged increment (commit_contact),
+!> the predictor of the converged multipliers under proportional loading.
 module frix_contact_augmentation
    use frix_kinds, only: dp
    use frix_model, only: model_t
@@ -34,7 +37,7 @@ module frix_contact_augmentation
    private
 
    public :: penetration_check_t, check_penetrations, augment_multipliers, restore_multipliers
-   public :: max_augmentations, grow_penalties, start_penalty_growth
+   public :: max_augmentations, grow_penalties, start_penalty_growth, predict_multipliers
 
    !> Default penetration tolerance: this fraction of the master's mean face size (against a
    !> rigid plane: the square root of the slave nodes' mean tributary area) (S1: with
@@ -235,6 +238,36 @@ contains
          system%passes(p)%previous_slip = -1.0_dp
       end do
    end subroutine start_penalty_growth
+
+   !> The multipliers' predictor at the start of an increment attempt of length dt (pseudo
+   !> time), in every augmented pass with PREDICT: lambda = lambda_n + dt (d lambda / dt)_n,
+   !> lambda_T likewise, the rates of the last converged increment (commit_contact; 0 for a
+   !> node not pressed at both its ends, which keeps its committed multipliers), lambda >= 0.
+   !> Under proportional loading the multipliers grow linearly with the load factor and the
+   !> prediction is the increment's converged multiplier. The caller passes dt = 0 in the
+   !> first increment of a step (the load's direction can change between steps). The
+   !> committed multipliers are untouched, so a cut-back (restore_multipliers) undoes the
+   !> prediction.
+   subroutine predict_multipliers(model, system, dt, predicted)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      real(dp), intent(in) :: dt
+      logical, intent(out) :: predicted   !! some multiplier changed
+      type(augmentation_t) :: settings
+      integer :: p
+      predicted = .false.
+      if (dt <= 0.0_dp) return
+      do p = 1, size(system%passes)
+         settings = pass_augmentation(model, system, p)
+         if (.not. (settings%augmented .and. model%contact_pairs(system%passes(p)%pair)%parameters%predict)) cycle
+         associate (pass => system%passes(p))
+            pass%multiplier = max(0.0_dp, pass%committed_multiplier + dt*pass%multiplier_rate)
+            predicted = predicted .or. any(pass%multiplier_rate /= 0.0_dp)
+            if (model%contact_pairs(pass%pair)%parameters%tangential_augmented) &
+               pass%tangential_multiplier = pass%committed_tangential_multiplier + dt*pass%tangential_multiplier_rate
+         end associate
+      end do
+   end subroutine predict_multipliers
 
    !> The multipliers and penalty factors of the last converged increment (after a failed
    !> attempt).

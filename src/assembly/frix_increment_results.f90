@@ -30,6 +30,9 @@ module frix_increment_results
       !> an augmented pass's committed factors on eps_N and eps_T (penalty growth; restart
       !> data), unallocated otherwise
       real(dp), allocatable :: penalty_scale(:)
+      !> an augmented pass with PREDICT: the committed multiplier rates (4, n: d lambda / dt and
+      !> d lambda_T / dt, force/area per unit pseudo time; restart data), unallocated otherwise
+      real(dp), allocatable :: multiplier_rate(:, :)
       !> a contact (not tie) pass: its pair's eps_N and eps_T as given or chosen by frix
       !> (automatic penalties), and 1 / 0 whether each was automatic; unallocated for a tie
       real(dp), allocatable :: penalty(:)

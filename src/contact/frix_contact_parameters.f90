@@ -44,6 +44,10 @@ module frix_contact_parameters
       !> penetration tolerance's rule); needs an augmented normal law
       logical :: tangential_augmented = .false.
       real(dp) :: stick_tolerance = -1.0_dp
+      !> PREDICT (augmented normal law only): an increment that is not its step's first starts
+      !> from multipliers extrapolated from the last converged increment's rates
+      !> (frix_contact_augmentation's predict_multipliers); No: from the committed ones
+      logical :: predict = .true.
       !> Search band (length): the contact search keeps slave/master candidates whose gap is
       !> below this, so that a node about to close is tracked; it does NOT activate contact,
       !> which the normal law decides (penalty: g < 0). CARAT's "gap tolerance" (1e-4 in

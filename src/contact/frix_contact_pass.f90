@@ -67,6 +67,11 @@ module frix_contact_pass
       !> with augmented friction: the tangential multiplier lambda_T of each slave node (3, n:
       !> force/area, global components), current and committed, as `multiplier`
       real(dp), allocatable :: tangential_multiplier(:, :), committed_tangential_multiplier(:, :)
+      !> augmented passes: the rates d lambda / dt and d lambda_T / dt of the last converged
+      !> increment (force/area per unit pseudo time; 0 for a node not pressed at both its ends),
+      !> from which the next increment's multipliers are predicted (PREDICT,
+      !> frix_contact_augmentation's predict_multipliers)
+      real(dp), allocatable :: multiplier_rate(:), tangential_multiplier_rate(:, :)
       !> augmented passes: the factors on eps_N and eps_T of the current solution (grown by
       !> frix_contact_augmentation's grow_penalties) and of the last converged increment, and
       !> the largest |gap| of a pressed node and stick slip (length) of the previous
@@ -142,9 +147,10 @@ contains
       allocate (pass%slip_direction(3, n_slave), source=0.0_dp)
       allocate (pass%result(n_slave))
       allocate (pass%anchor_xi(2, n_slave), pass%anchor_point(3, n_slave), pass%slip(n_slave), &
-                pass%multiplier(n_slave), pass%committed_multiplier(n_slave), source=0.0_dp)
-      allocate (pass%tangential_multiplier(3, n_slave), pass%committed_tangential_multiplier(3, n_slave), &
+                pass%multiplier(n_slave), pass%committed_multiplier(n_slave), pass%multiplier_rate(n_slave), &
                 source=0.0_dp)
+      allocate (pass%tangential_multiplier(3, n_slave), pass%committed_tangential_multiplier(3, n_slave), &
+                pass%tangential_multiplier_rate(3, n_slave), source=0.0_dp)
       allocate (pass%has_anchor(n_slave), source=.false.)
    end subroutine start_pass_state
 

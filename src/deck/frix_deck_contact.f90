@@ -52,6 +52,8 @@ module frix_deck_contact
       integer :: tmethod_token = 0           !! token of TMETHOD's value, 0 if not given
       real(dp) :: stick_tolerance = -1.0_dp  !! STICKTOL (length), < 0 if not given
       integer :: stick_token = 0             !! token of STICKTOL's value, 0 if not given
+      logical :: predict = .true.            !! PREDICT Yes|No
+      integer :: predict_token = 0           !! token of PREDICT's value, 0 if not given
    end type pair_options_t
 
 contains
@@ -240,6 +242,9 @@ contains
             call reader%take_word(line, position, 'a normal contact method', options%method, ok)
          case ('TMETHOD')
             call read_tangential_method(reader, line, position, options, ok)
+         case ('PREDICT')
+            options%predict_token = position
+            call reader%take_yes_no(line, position, 'PREDICT', options%predict, ok)
          case ('STICKTOL')
             options%stick_token = position
             call reader%take_real(line, position, 'STICKTOL', options%stick_tolerance, ok)
@@ -268,7 +273,7 @@ contains
             call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
                                joined(spec_names(normal_specs))//', EPST, PENALTY_FACTOR, '// &
                                joined(spec_names(friction_specs))// &
-                               ', METHOD, TMETHOD, STICKTOL, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
+                               ', METHOD, TMETHOD, STICKTOL, PREDICT, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
             ok = .false.
          end select
       end do
@@ -289,7 +294,8 @@ contains
    end subroutine read_tangential_method
 
    !> Augmented friction (TMETHOD Augmented, STICKTOL) needs friction and an augmented normal
-   !> law (the augmentations are driven by the pair's MAXAUG); STICKTOL belongs to it.
+   !> law (the augmentations are driven by the pair's MAXAUG); STICKTOL belongs to it. PREDICT
+   !> needs an augmented normal law.
    subroutine set_tangential_method(reader, line, options, pair, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(deck_line_t), intent(in) :: line
@@ -297,11 +303,15 @@ contains
       type(contact_pair_t), intent(inout) :: pair
       logical, intent(inout) :: ok
       type(augmentation_t) :: settings
+      settings = pair%parameters%normal%augmentation()
+      if (options%predict_token > 0) &
+         call require(reader, ok, settings%augmented, line, options%predict_token - 1, &
+                      'PREDICT belongs to METHOD Augmented')
+      pair%parameters%predict = options%predict
       if (options%stick_token > 0) &
          call require(reader, ok, options%tangential_augmented, line, options%stick_token - 1, &
                       'STICKTOL belongs to TMETHOD Augmented')
       if (.not. (ok .and. options%tangential_augmented)) return
-      settings = pair%parameters%normal%augmentation()
       call require(reader, ok, settings%augmented, line, options%tmethod_token, &
                    'TMETHOD Augmented needs METHOD Augmented')
       call require(reader, ok, .not. pair%parameters%friction%frictionless(), line, options%tmethod_token, &

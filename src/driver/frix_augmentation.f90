@@ -1,5 +1,6 @@
 !> Augmented Lagrangian contact in the increment loop (docs/contact.md, "Augmented
-!> Lagrangian"): an increment is solved by Newton with the multipliers held, then, while an
+!> Lagrangian"): an increment is solved by Newton with the multipliers held (predicted from
+!> the last increments' with PREDICT, frix_contact_augmentation), then, while an
 !> augmented pass has an active slave node whose |gap| exceeds its tolerance, the
 !> multipliers are updated by Uzawa's rule (frix_contact_augmentation) and the increment is
 !> solved again from where the last solution ended, at most MAXAUG times (the largest over
@@ -17,11 +18,12 @@ module frix_augmentation
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_model, only: model_t
-   use frix_analysis_state, only: analysis_state_t
+   use frix_analysis_state, only: analysis_state_t, restore_state
    use frix_newton_solver, only: newton_context_t, path_constraint_t, solve_increment
    use frix_newton_report, only: newton_report_t
    use frix_contact_augmentation, only: penetration_check_t, check_penetrations, augment_multipliers, &
-                                        max_augmentations, grow_penalties, start_penalty_growth
+                                        max_augmentations, grow_penalties, start_penalty_growth, &
+                                        predict_multipliers
    implicit none
    private
 
@@ -30,7 +32,11 @@ module frix_augmentation
 contains
 
    !> solve_increment, followed by the augmentations of augmented contact pairs (module
-   !> head). `report` is the last solution's; `iterations` counts the Newton iterations of all.
+   !> head), from the multipliers predicted by PREDICT (frix_contact_augmentation's
+   !> predict_multipliers); when that attempt does not converge, the increment is solved
+   !> again from the committed multipliers before the caller cuts back (a prediction can be
+   !> poor where a node's multiplier jumped in the last increment, e.g. at a punch edge).
+   !> `report` is the last solution's; `iterations` counts the Newton iterations of all.
    subroutine solve_augmented(model, context, state, time, max_iterations, label, report, iterations, &
                               error, path)
       type(model_t), intent(in) :: model
@@ -43,11 +49,44 @@ contains
       integer, intent(out) :: iterations
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
+      integer :: retry_iterations
+      logical :: predicted
+      call augmented_attempt(model, context, state, time, max_iterations, label, .true., predicted, report, &
+                             iterations, error, path)
+      if (.not. predicted .or. allocated(error) .or. report%converged .or. report%interrupted) return
+      if (.not. context%quiet) write (*, '(2x,a)') 'no convergence from the predicted multipliers: the '// &
+         'increment solved again from the committed ones'
+      call restore_state(state)
+      call augmented_attempt(model, context, state, time, max_iterations, label, .false., predicted, report, &
+                             retry_iterations, error, path)
+      iterations = iterations + retry_iterations
+   end subroutine solve_augmented
+
+   !> One attempt of solve_augmented, with the multipliers predicted if `predict` (`predicted`:
+   !> some multiplier was).
+   subroutine augmented_attempt(model, context, state, time, max_iterations, label, predict, predicted, report, &
+                                iterations, error, path)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      integer, intent(in) :: max_iterations
+      character(len=*), intent(in) :: label
+      logical, intent(in) :: predict
+      logical, intent(out) :: predicted
+      type(newton_report_t), intent(out) :: report
+      integer, intent(out) :: iterations
+      type(error_t), allocatable, intent(out) :: error
+      type(path_constraint_t), intent(in), optional :: path
       type(penetration_check_t) :: check
       real(dp) :: change, solve_time
       integer :: k, limit
       logical :: grown
-      if (state%has_contact) call start_penalty_growth(state%contact)
+      predicted = .false.
+      if (state%has_contact) then
+         call start_penalty_growth(state%contact)
+         if (predict) call predict_multipliers(model, state%contact, prediction_step(state, time), predicted)
+      end if
       call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
       iterations = report%iterations
       if (allocated(error) .or. .not. report%converged .or. .not. state%has_contact) return
@@ -76,7 +115,17 @@ contains
             trim(merge('stick slip', '|gap|     ', check%slip))//' '// &
             to_string(check%penetration)//' (tolerance '//to_string(check%tolerance)//') at node '// &
             to_string(model%mesh%node_ids(check%node))//'; the increment is accepted'
-   end subroutine solve_augmented
+   end subroutine augmented_attempt
+
+   !> The pseudo time over which an increment to `time` predicts the multipliers: time -
+   !> t_n, or 0 when the last converged increment ended at or before the start of time's step
+   !> (step s spans (s - 1, s]; a step's first increment has nothing to extrapolate from).
+   pure real(dp) function prediction_step(state, time)
+      type(analysis_state_t), intent(in) :: state
+      real(dp), intent(in) :: time
+      prediction_step = 0.0_dp
+      if (state%committed_time > real(ceiling(time), dp) - 1.0_dp) prediction_step = time - state%committed_time
+   end function prediction_step
 
    !> The progress line of augmentation k.
    subroutine print_augmentation(context, model, k, check, change, grown)

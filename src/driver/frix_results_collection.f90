@@ -190,6 +190,11 @@ contains
                                       state%contact%passes(p)%committed_tangential_scale]
                if (model%contact_pairs(pair)%parameters%tangential_augmented) &
                   table%tangential_multiplier = state%contact%passes(p)%committed_tangential_multiplier
+               if (model%contact_pairs(pair)%parameters%predict) then
+                  allocate (table%multiplier_rate(4, size(state%contact%passes(p)%multiplier_rate)))
+                  table%multiplier_rate(1, :) = state%contact%passes(p)%multiplier_rate
+                  table%multiplier_rate(2:4, :) = state%contact%passes(p)%tangential_multiplier_rate
+               end if
             end if
             call check_contact_finite(model, results, table, error)
             if (allocated(error)) return

@@ -264,6 +264,9 @@ contains
             if (allocated(results%contact(p)%tangential_multiplier)) &
                call self%hdf5%add_contact_array('pass'//to_string(p)//'_tangential_multiplier', &
                                                 results%contact(p)%tangential_multiplier)
+            if (allocated(results%contact(p)%multiplier_rate)) &
+               call self%hdf5%add_contact_array('pass'//to_string(p)//'_multiplier_rate', &
+                                                results%contact(p)%multiplier_rate)
             if (allocated(results%contact(p)%penalty)) &
                call self%hdf5%add_contact_array('pass'//to_string(p)//'_penalty', results%contact(p)%penalty)
             if (allocated(results%contact(p)%penalty_scale)) &

@@ -71,6 +71,17 @@ contains
             pass%committed_normal_scale = values(1, 1)
             pass%tangential_scale = values(1, 2)
             pass%committed_tangential_scale = values(1, 2)
+            if (model%contact_pairs(pass%pair)%parameters%predict) then
+               values = spread(pass%multiplier_rate, 1, 4)   ! for the shape (4, n)
+               call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_multiplier_rate', &
+                                         values, error)
+               if (allocated(error)) then
+                  error%message = 'contact pass '//to_string(p)//': '//error%message
+                  return
+               end if
+               pass%multiplier_rate = values(1, :)
+               pass%tangential_multiplier_rate = values(2:4, :)
+            end if
             if (.not. model%contact_pairs(pass%pair)%parameters%tangential_augmented) cycle
             values = pass%tangential_multiplier
             call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_tangential_multiplier', &

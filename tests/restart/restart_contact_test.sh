@@ -21,7 +21,7 @@ def last(path):
         g = f['increments'][sorted(f['increments'])[-1]]
         keys = ['displacement', 'contact/traction', 'contact/slip', 'contact/pressure']
         keys += [k for k in ('contact/pass1_multiplier', 'contact/pass1_tangential_multiplier',
-                             'contact/pass1_penalty_scale') if k in g]
+                             'contact/pass1_penalty_scale', 'contact/pass1_multiplier_rate') if k in g]
         return {k: g[k][...] for k in keys}
 ref, got = last(f"{out}/full/{name}.h5"), last(f"{out}/restarted/{name}.h5")
 fail = 0
