@@ -53,34 +53,21 @@ contains
    !> (>= 1), PENRATE (0 < . <= 1), PENCAP (>= 1).
    function augmented_properties() result(specs)
       type(property_spec_t), allocatable :: specs(:)
-      type(property_spec_t) :: tolerance, limit, growth, rate, cap
-      tolerance%name = 'PENTOL'
-      tolerance%what = 'PENTOL'
-      tolerance%bounded = .true.
-      tolerance%strict = .true.
-      tolerance%bound_message = 'PENTOL must be positive'
-      limit%name = 'MAXAUG'
-      limit%what = 'MAXAUG'
-      limit%bounded = .true.
-      limit%minimum = 1.0_dp
-      limit%bound_message = 'MAXAUG must be at least 1'
-      growth%name = 'PENGROW'
-      growth%what = 'PENGROW'
-      growth%bounded = .true.
-      growth%minimum = 1.0_dp
-      growth%bound_message = 'PENGROW must be at least 1'
-      rate%name = 'PENRATE'
-      rate%what = 'PENRATE'
-      rate%bounded = .true.
-      rate%strict = .true.
-      rate%bound_message = 'PENRATE must be positive'
-      cap%name = 'PENCAP'
-      cap%what = 'PENCAP'
-      cap%bounded = .true.
-      cap%minimum = 1.0_dp
-      cap%bound_message = 'PENCAP must be at least 1'
-      specs = penalty_properties()
-      specs = [specs, tolerance, limit, growth, rate, cap]
+      specs = [penalty_properties(), &
+               property_spec_t(name='PENTOL', what='PENTOL', bounded=.true., strict=.true., &
+                               bound_message='PENTOL must be positive'), &
+               at_least_one('MAXAUG'), at_least_one('PENGROW'), &
+               property_spec_t(name='PENRATE', what='PENRATE', bounded=.true., strict=.true., &
+                               bound_message='PENRATE must be positive'), &
+               at_least_one('PENCAP')]
+   contains
+      !> A property whose value must be >= 1.
+      function at_least_one(name) result(spec)
+         character(len=*), intent(in) :: name
+         type(property_spec_t) :: spec
+         spec = property_spec_t(name=name, what=name, bounded=.true., minimum=1.0_dp, &
+                                bound_message=name//' must be at least 1')
+      end function at_least_one
    end function augmented_properties
 
    !> AUGMENTED from its properties: eps_N as the penalty law reads it, PENTOL, MAXAUG.
