@@ -30,6 +30,7 @@ module frix_contact_augmentation
    use frix_kinds, only: dp
    use frix_model, only: model_t
    use frix_normal_contact_law, only: augmentation_t
+   use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_open, contact_stick
    use frix_contact_pass, only: contact_pass_t
    use frix_contact_assembly, only: contact_system_t
@@ -100,17 +101,12 @@ contains
          settings = pass_augmentation(model, system, p)
          if (.not. settings%augmented) cycle
          associate (pass => system%passes(p), parameters => model%contact_pairs(system%passes(p)%pair)%parameters)
-            tolerance = settings%penetration_tolerance
-            if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*surface_size(pass)
-            stick_tolerance = parameters%stick_tolerance
-            if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
+            call pass_tolerances(settings, parameters, pass, tolerance, stick_tolerance)
             do i = 1, size(pass%slave_nodes)
                if (pass%result(i)%status == contact_open) cycle
                call compare(pass%slave_nodes(i), abs(pass%result(i)%gap), tolerance, .false.)
                if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
-                  call compare(pass%slave_nodes(i), &
-                               elastic_slip(pass, i, pass%tangential_scale*parameters%tangential_penalty), &
-                               stick_tolerance, .true.)
+                  call compare(pass%slave_nodes(i), stick_slip(pass, i, parameters), stick_tolerance, .true.)
             end do
          end associate
       end do
@@ -131,6 +127,20 @@ contains
       end subroutine compare
    end function check_penetrations
 
+   !> Pass `pass`'s penetration (|g|) and stick tolerances [length]: the given ones, or
+   !> default_tolerance_fraction times surface_size.
+   subroutine pass_tolerances(settings, parameters, pass, tolerance, stick_tolerance)
+      type(augmentation_t), intent(in) :: settings
+      type(contact_parameters_t), intent(in) :: parameters
+      type(contact_pass_t), intent(in) :: pass
+      real(dp), intent(out) :: tolerance, stick_tolerance
+      tolerance = settings%penetration_tolerance
+      if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*surface_size(pass)
+      stick_tolerance = parameters%stick_tolerance
+      if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
+   end subroutine pass_tolerances
+
+
    !> The size the default tolerances scale with (length): the master's mean face size, or
    !> against a rigid plane the square root of the slave nodes' mean tributary area.
    pure real(dp) function surface_size(pass)
@@ -139,17 +149,18 @@ contains
       if (pass%rigid .and. size(pass%area) > 0) surface_size = sqrt(sum(pass%area)/size(pass%area))
    end function surface_size
 
-   !> |t - (I - n n) lambda_T| / eps_T of slave i (length): the elastic slip of a sticking node.
-   pure real(dp) function elastic_slip(pass, i, tangential_penalty)
+   !> |t - (I - n n) lambda_T| / eps_T of slave i (length): the elastic slip of a sticking node
+   !> of an augmented-friction pass, eps_T the pass's current (possibly grown) one.
+   pure real(dp) function stick_slip(pass, i, parameters)
       type(contact_pass_t), intent(in) :: pass
       integer, intent(in) :: i
-      real(dp), intent(in) :: tangential_penalty
+      type(contact_parameters_t), intent(in) :: parameters
       real(dp) :: lambda(3), normal(3)
       normal = pass%result(i)%normal
       lambda = pass%tangential_multiplier(:, i)
       lambda = lambda - dot_product(lambda, normal)*normal
-      elastic_slip = norm2(pass%result(i)%traction - lambda)/tangential_penalty
-   end function elastic_slip
+      stick_slip = norm2(pass%result(i)%traction - lambda)/(pass%tangential_scale*parameters%tangential_penalty)
+   end function stick_slip
 
    !> Uzawa's update of every augmented pass: lambda <- p_N of the last evaluation (0 for an
    !> open node), with augmented friction lambda_T <- t. Returns the largest change of a normal
@@ -202,12 +213,9 @@ contains
                if (pass%result(i)%status == contact_open) cycle
                penetration = max(penetration, abs(pass%result(i)%gap))
                if (parameters%tangential_augmented .and. pass%result(i)%status == contact_stick) &
-                  slip = max(slip, elastic_slip(pass, i, pass%tangential_scale*parameters%tangential_penalty))
+                  slip = max(slip, stick_slip(pass, i, parameters))
             end do
-            tolerance = settings%penetration_tolerance
-            if (tolerance < 0.0_dp) tolerance = default_tolerance_fraction*surface_size(pass)
-            stick_tolerance = parameters%stick_tolerance
-            if (stick_tolerance < 0.0_dp) stick_tolerance = default_tolerance_fraction*surface_size(pass)
+            call pass_tolerances(settings, parameters, pass, tolerance, stick_tolerance)
             call grow(pass%normal_scale, penetration, pass%previous_penetration, tolerance)
             if (parameters%tangential_augmented) call grow(pass%tangential_scale, slip, pass%previous_slip, &
                                                            stick_tolerance)

@@ -111,10 +111,7 @@ contains
       check = check_penetrations(model, state%contact)
       if (.not. check%within .and. .not. context%quiet) &
          write (*, '(2x,a)') 'augmentation limit ('//to_string(limit)//') reached: '// &
-            to_string(check%n_over)//' nodes beyond the tolerance, largest '// &
-            trim(merge('stick slip', '|gap|     ', check%slip))//' '// &
-            to_string(check%penetration)//' (tolerance '//to_string(check%tolerance)//') at node '// &
-            to_string(model%mesh%node_ids(check%node))//'; the increment is accepted'
+            violation_text(model, check)//'; the increment is accepted'
    end subroutine augmented_attempt
 
    !> The pseudo time over which an increment to `time` predicts the multipliers: time -
@@ -136,10 +133,18 @@ contains
       real(dp), intent(in) :: change
       logical, intent(in) :: grown   !! a penalty grew for the next solution
       if (context%quiet) return
-      write (*, '(2x,a)') 'augmentation '//to_string(k)//': '//to_string(check%n_over)// &
-         ' nodes beyond the tolerance, largest '//trim(merge('stick slip', '|gap|     ', check%slip))// &
-         ' '//to_string(check%penetration)// &
-         ' (tolerance '//to_string(check%tolerance)//') at node '//to_string(model%mesh%node_ids(check%node))// &
+      write (*, '(2x,a)') 'augmentation '//to_string(k)//': '//violation_text(model, check)// &
          '; largest multiplier change '//to_string(change)//trim(merge('; penalty grown', '               ', grown))
    end subroutine print_augmentation
+
+   !> "<n> nodes beyond the tolerance, largest |gap| (or stick slip) <v> (tolerance <t>) at
+   !> node <id>", for the progress lines.
+   function violation_text(model, check) result(text)
+      type(model_t), intent(in) :: model
+      type(penetration_check_t), intent(in) :: check
+      character(len=:), allocatable :: text
+      text = to_string(check%n_over)//' nodes beyond the tolerance, largest '// &
+             trim(merge('stick slip', '|gap|     ', check%slip))//' '//to_string(check%penetration)// &
+             ' (tolerance '//to_string(check%tolerance)//') at node '//to_string(model%mesh%node_ids(check%node))
+   end function violation_text
 end module frix_augmentation

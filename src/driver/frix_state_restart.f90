@@ -2,7 +2,8 @@
 !> the committed displacements (with the RESET_DISPLACEMENT reference, if any), EAS parameters
 !> and material history of one converged increment, and the committed slip history of every
 !> contact pass (`contact/pass<p>_history`) with the multipliers and penalty factors of
-!> augmented passes (`contact/pass<p>_multiplier`, `contact/pass<p>_penalty_scale`).
+!> augmented passes (`contact/pass<p>_multiplier`, `_penalty_scale`, `_multiplier_rate` with
+!> PREDICT, `_tangential_multiplier` with augmented friction).
 !> What is read here is what frix_results_collection puts into every increment's results.
 module frix_state_restart
    use frix_kinds, only: dp
@@ -41,58 +42,48 @@ contains
       if (.not. state%has_contact) return
       do p = 1, size(state%contact%passes)
          call get_contact_history(state%contact, p, values)   ! for the shape
-         call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_history', values, error)
-         if (allocated(error)) then
-            error%message = 'contact pass '//to_string(p)//': '//error%message
-            return
-         end if
+         call read_pass_array('history', values)
+         if (allocated(error)) return
          call set_contact_history(state%contact, p, values)
-         associate (pass => state%contact%passes(p))
-            if (model%contact_pairs(pass%pair)%tied) cycle
-            settings = model%contact_pairs(pass%pair)%parameters%normal%augmentation()
+         associate (pass => state%contact%passes(p), parameters => model%contact_pairs(state%contact%passes(p)%pair))
+            if (parameters%tied) cycle
+            settings = parameters%parameters%normal%augmentation()
             if (.not. settings%augmented) cycle
             values = reshape(pass%multiplier, [1, size(pass%multiplier)])
-            call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_multiplier', values, &
-                                      error)
-            if (allocated(error)) then
-               error%message = 'contact pass '//to_string(p)//': '//error%message
-               return
-            end if
+            call read_pass_array('multiplier', values)
+            if (allocated(error)) return
             pass%multiplier = values(1, :)
             pass%committed_multiplier = values(1, :)
             values = reshape([pass%normal_scale, pass%tangential_scale], [1, 2])
-            call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_penalty_scale', values, &
-                                      error)
-            if (allocated(error)) then
-               error%message = 'contact pass '//to_string(p)//': '//error%message
-               return
-            end if
+            call read_pass_array('penalty_scale', values)
+            if (allocated(error)) return
             pass%normal_scale = values(1, 1)
             pass%committed_normal_scale = values(1, 1)
             pass%tangential_scale = values(1, 2)
             pass%committed_tangential_scale = values(1, 2)
-            if (model%contact_pairs(pass%pair)%parameters%predict) then
+            if (parameters%parameters%predict) then
                values = spread(pass%multiplier_rate, 1, 4)   ! for the shape (4, n)
-               call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_multiplier_rate', &
-                                         values, error)
-               if (allocated(error)) then
-                  error%message = 'contact pass '//to_string(p)//': '//error%message
-                  return
-               end if
+               call read_pass_array('multiplier_rate', values)
+               if (allocated(error)) return
                pass%multiplier_rate = values(1, :)
                pass%tangential_multiplier_rate = values(2:4, :)
             end if
-            if (.not. model%contact_pairs(pass%pair)%parameters%tangential_augmented) cycle
+            if (.not. parameters%parameters%tangential_augmented) cycle
             values = pass%tangential_multiplier
-            call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_tangential_multiplier', &
-                                      values, error)
-            if (allocated(error)) then
-               error%message = 'contact pass '//to_string(p)//': '//error%message
-               return
-            end if
+            call read_pass_array('tangential_multiplier', values)
+            if (allocated(error)) return
             pass%tangential_multiplier = values
             pass%committed_tangential_multiplier = values
          end associate
       end do
+   contains
+      !> `contact/pass<p>_<name>` of the increment into `values` (sized by the caller); an
+      !> error names the pass.
+      subroutine read_pass_array(name, values)
+         character(len=*), intent(in) :: name
+         real(dp), intent(inout) :: values(:, :)
+         call read_increment_array(path, step, increment, 'contact/pass'//to_string(p)//'_'//name, values, error)
+         if (allocated(error)) error%message = 'contact pass '//to_string(p)//': '//error%message
+      end subroutine read_pass_array
    end subroutine read_state_restart
 end module frix_state_restart
