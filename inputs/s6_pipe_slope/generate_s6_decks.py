@@ -76,6 +76,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "meshes"))
+from ring_mesh import radii  # noqa: E402  (n + 1 points from a to b, last / first size = grading)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 B = 0.1625            # pipe outer radius
@@ -96,18 +99,6 @@ def z_end(y):
     if y >= -A_BOX - EPS:
         return Z_CREST + (Z_TOE - Z_CREST) * (Y_TOP - y) / (Y_TOP + A_BOX)
     return Z_TOE
-
-
-def graded(x0, x1, n, ratio=1.0):
-    """n + 1 points from x0 to x1, last / first element size = ratio."""
-    q = ratio ** (1.0 / (n - 1)) if n > 1 else 1.0
-    sizes = [q ** i for i in range(n)]
-    total = sum(sizes)
-    pts = [x0]
-    for h in sizes[:-1]:
-        pts.append(pts[-1] + (x1 - x0) * h / total)
-    pts.append(x1)
-    return pts
 
 
 class Mesh:
@@ -158,9 +149,9 @@ def soil_section(refine):
         for i in range(nr):
             # counter-clockwise in (x, y): angle grows with j, radius with i
             quads.append([rings[i][0], rings[i + 1][0], rings[i + 1][1], rings[i][1]])
-    xs = graded(0.0, A_BOX, nc) + graded(A_BOX, WIDTH, nf, 3.0 ** (1.0 / refine) if nf > 1 else 1)[1:]
-    ys = (graded(Y_BOT, -A_BOX, nb, (1 / 3.0) ** (1.0 / refine)) + graded(-A_BOX, A_BOX, 2 * nc)[1:]
-          + graded(A_BOX, Y_TOP, nt)[1:])
+    xs = radii(0.0, A_BOX, nc, 1.0) + radii(A_BOX, WIDTH, nf, 3.0 ** (1.0 / refine) if nf > 1 else 1)[1:]
+    ys = (radii(Y_BOT, -A_BOX, nb, (1 / 3.0) ** (1.0 / refine)) + radii(-A_BOX, A_BOX, 2 * nc, 1.0)[1:]
+          + radii(A_BOX, Y_TOP, nt, 1.0)[1:])
     for i in range(len(xs) - 1):
         for j in range(len(ys) - 1):
             xc, yc = 0.5 * (xs[i] + xs[i + 1]), 0.5 * (ys[j] + ys[j + 1])
