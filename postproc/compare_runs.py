@@ -32,7 +32,6 @@ reference position), ``--table CSV`` (one row per node), ``--plot PNG`` (the dif
 against the reference coordinate ``--axis``, one curve per component).
 """
 
-import csv
 import os
 import sys
 
@@ -211,16 +210,6 @@ def displacement(run, entry, n_nodes):
     return values
 
 
-def write_table(path, header, rows):
-    try:
-        with open(path, "w", newline="", encoding="utf-8") as stream:
-            writer = csv.writer(stream)
-            writer.writerow(header)
-            writer.writerows(rows)
-    except OSError as error:
-        raise UserError(f"cannot write {path}: {error}") from None
-
-
 def plot(args, position, difference, labels, unit, title):
     pyplot = frix_results.use_agg_backend()
     figure, axes = pyplot.subplots(figsize=(7, 4.5))
@@ -287,7 +276,7 @@ def main(argv=None):
         rows = [[int(ids[k])] + [repr(float(value)) for value in
                                  (*x[k], position[k], *u_a[k], *u_b[k], *difference[k])]
                 for k in range(len(ids))]
-        write_table(args.table, header, rows)
+        frix_results.write_csv(args.table, header, rows)
         print(f"wrote {args.table} ({len(rows)} rows)")
     if args.plot is not None:
         title = args.title or f"{labels[1]} - {labels[0]}, {what}, {entry_b.label()}"

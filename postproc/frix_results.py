@@ -23,6 +23,7 @@ Runs with Debian's ``/usr/bin/python3`` (numpy, matplotlib, meshio).
 
 import argparse
 import ast
+import csv
 import os
 import re
 import sys
@@ -84,6 +85,17 @@ def save_figure(figure, path, dpi=150):
     try:
         figure.savefig(path, dpi=dpi, bbox_inches="tight")
     except (OSError, ValueError) as error:
+        raise UserError(f"cannot write {path}: {error}") from None
+
+
+def write_csv(path, header, rows):
+    """Write a CSV table (a header row, then ``rows``); a write failure is a UserError."""
+    try:
+        with open(path, "w", newline="", encoding="utf-8") as stream:
+            writer = csv.writer(stream)
+            writer.writerow(header)
+            writer.writerows(rows)
+    except OSError as error:
         raise UserError(f"cannot write {path}: {error}") from None
 
 

@@ -30,7 +30,6 @@ and failed_points) or, with --point, the mesh with these fields at the nodes, an
 displacement as point data, for ParaView (Threshold on `failed`, Warp By Vector).
 """
 
-import csv
 import math
 import os
 import sys
@@ -264,19 +263,13 @@ def main(argv=None):
     print(f"largest f = {f[worst]:.6e} at {where} "
           f"(s1 = {principal[worst, 0]:.6e}, s3 = {principal[worst, 2]:.6e})")
     if args.table is not None:
-        try:
-            with open(args.table, "w", newline="", encoding="utf-8") as stream:
-                writer = csv.writer(stream)
-                writer.writerow(["node_id" if what == "nodes" else "element_id", "block"]
-                                + (["point"] if points is not None else [])
-                                + ["s1", "s2", "s3", "f", "failed"])
-                for row in range(len(f)):
-                    writer.writerow([int(ids[row]), int(blocks[row])]
-                                    + ([int(points[row])] if points is not None else [])
-                                    + [repr(float(value)) for value in principal[row]]
-                                    + [repr(float(f[row])), int(failed[row])])
-        except OSError as error:
-            raise UserError(f"cannot write {args.table}: {error}") from None
+        header = (["node_id" if what == "nodes" else "element_id", "block"]
+                  + (["point"] if points is not None else []) + ["s1", "s2", "s3", "f", "failed"])
+        frix_results.write_csv(args.table, header,
+                               ([int(ids[row]), int(blocks[row])]
+                                + ([int(points[row])] if points is not None else [])
+                                + [repr(float(value)) for value in principal[row]]
+                                + [repr(float(f[row])), int(failed[row])] for row in range(len(f))))
         print(f"wrote {args.table} ({len(f)} rows)")
     if args.vtk is not None:
         count = write_vtk(args.vtk, geometry, rows, ids, blocks, principal, f, failed, points,

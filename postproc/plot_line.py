@@ -221,16 +221,10 @@ def main(argv=None):
     if args.csv is not None:
         header = ["step", "increment", "time", "point", "node_id", "x", "y", "z", "position",
                   "value"] + (["analytic"] if analytic is not None else [])
-        try:
-            with open(args.csv, "w", newline="", encoding="utf-8") as stream:
-                writer = csv.writer(stream)
-                writer.writerow(header)
-                for row in rows:
-                    writer.writerow(["" if item is None else
-                                     (repr(float(item)) if isinstance(item, (float, np.floating))
-                                      else item) for item in row])
-        except OSError as error:
-            raise UserError(f"cannot write {args.csv}: {error}") from None
+        frix_results.write_csv(args.csv, header,
+                               (["" if item is None else
+                                 (repr(float(item)) if isinstance(item, (float, np.floating)) else item)
+                                 for item in row] for row in rows))
         print(f"wrote {args.csv} ({len(rows)} rows)")
     return 0
 
