@@ -481,7 +481,7 @@ contains
       do p = 1, size(system%passes)
          associate (pass => system%passes(p))
             do i = 1, size(pass%multiplier)
-               if (dt > 0.0_dp .and. pass%multiplier(i) > 0.0_dp) then
+               if (dt > 0.0_dp .and. pass%multiplier(i) > 0.0_dp .and. pass%committed_multiplier(i) > 0.0_dp) then
                   pass%multiplier_rate(i) = (pass%multiplier(i) - pass%committed_multiplier(i))/dt
                   pass%tangential_multiplier_rate(:, i) = (pass%tangential_multiplier(:, i) - &
                                                            pass%committed_tangential_multiplier(:, i))/dt

@@ -79,39 +79,59 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
       type(penetration_check_t) :: check
-      real(dp) :: change, solve_time
+      real(dp) :: change
       integer :: k, limit
-      logical :: grown
+      logical :: grown, intermediate
       predicted = .false.
+      limit = 0
       if (state%has_contact) then
+         limit = max_augmentations(model, state%contact)
          call start_penalty_growth(state%contact)
          if (predict) call predict_multipliers(model, state%contact, prediction_step(state, time), predicted)
       end if
-      call solve_increment(model, context, state, time, max_iterations, label, report, error, path)
+      ! with augmented pairs, every solution is intermediate until its constraints are met
+      intermediate = limit > 0
+      call solve_increment(model, context, state, time, max_iterations, label, report, error, path, intermediate)
       iterations = report%iterations
-      if (allocated(error) .or. .not. report%converged .or. .not. state%has_contact) return
-      limit = max_augmentations(model, state%contact)
-      do k = 1, limit
+      if (allocated(error) .or. .not. report%converged .or. limit == 0) return
+      k = 0
+      do
          check = check_penetrations(model, state%contact)
-         if (check%within) return
+         if (check%within .or. k == limit) then
+            if (.not. intermediate) exit
+            ! the last solution converged on the residual alone: to both criteria now (mostly
+            ! one iteration), and checked again
+            intermediate = .false.
+            call solve_again(label//'  final')
+            if (allocated(error) .or. .not. report%converged) return
+            cycle
+         end if
+         k = k + 1
          call grow_penalties(model, state%contact, grown)
          change = augment_multipliers(model, state%contact)
          context%n_augmentations = context%n_augmentations + 1
          call print_augmentation(context, model, k, check, change, grown)
-         ! path following: the load factor found is kept as the start (solve_increment's `time`)
-         solve_time = state%time
-         call solve_increment(model, context, state, solve_time, max_iterations, label//'  aug'//to_string(k), &
-                              report, error, path)
-         iterations = iterations + report%iterations
+         intermediate = .true.
+         call solve_again(label//'  aug'//to_string(k))
          if (allocated(error) .or. .not. report%converged) then
             if (allocated(report%failure)) report%failure = report%failure//' in augmentation '//to_string(k)
             return
          end if
       end do
-      check = check_penetrations(model, state%contact)
       if (.not. check%within .and. .not. context%quiet) &
          write (*, '(2x,a)') 'augmentation limit ('//to_string(limit)//') reached: '// &
             violation_text(model, check)//'; the increment is accepted'
+   contains
+      !> The increment solved again from where the last solution ended (path following: the
+      !> load factor found is the start), its iterations counted.
+      subroutine solve_again(solve_label)
+         character(len=*), intent(in) :: solve_label
+         real(dp) :: solve_time
+         solve_time = state%time
+         call solve_increment(model, context, state, solve_time, max_iterations, solve_label, report, error, &
+                              path, intermediate)
+         iterations = iterations + report%iterations
+      end subroutine solve_again
    end subroutine augmented_attempt
 
    !> The pseudo time over which an increment to `time` predicts the multipliers: time -

@@ -6,7 +6,10 @@
 !>   ||du|| <= TOLDISP * ||u||  for the last correction du   (displacement criterion);
 !> an iterate whose residual is already below 1e-4 TOLRESID times the reference is accepted
 !> without the displacement criterion (the response was linear, as in Abaqus' "zero residual"
-!> rule). With contact, an iterate is converged only when no slave node is held in a friction
+!> rule). An intermediate solution of augmented Lagrangian contact (`residual_only`,
+!> frix_augmentation) is converged on the residual criterion alone: its multipliers are
+!> updated next anyway, and the solution the increment ends with meets both criteria.
+!> With contact, an iterate is converged only when no slave node is held in a friction
 !> branch other than the law's own (slip reversal, frix_contact_assembly). The energy norm
 !> printed per iteration is |du . r| of the correction just made.
 !>
@@ -125,7 +128,9 @@ contains
    !> (converged or not) and its pseudo time; the caller commits or restores. `error` is set
    !> only for failures that a smaller increment cannot cure (a singular matrix at the first
    !> iteration, a solver failure); non-convergence is reported in `report` instead.
-   subroutine solve_increment(model, context, state, time, max_iterations, label, report, error, path)
+   !> `residual_only`: converged on the residual criterion alone (module head).
+   subroutine solve_increment(model, context, state, time, max_iterations, label, report, error, path, &
+                              residual_only)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -135,10 +140,14 @@ contains
       type(newton_report_t), intent(out) :: report
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
+      logical, intent(in), optional :: residual_only
       integer :: iteration, outcome
       real(dp) :: residual_norm, reference, correction_norm, energy, current_time, time_correction
+      logical :: waive_displacement
 
       current_time = time
+      waive_displacement = .false.
+      if (present(residual_only)) waive_displacement = residual_only
       call start_increment(model, context, state, time, path)
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
@@ -157,7 +166,7 @@ contains
          call record_iteration(context, state, label, current_time, iteration, residual_norm, reference, &
                                energy, report)
          call test_convergence(model, context, state, iteration, max_iterations, residual_norm, reference, &
-                               correction_norm, report, outcome, path)
+                               correction_norm, waive_displacement, report, outcome, path)
          select case (outcome)
          case (outcome_converged)
             report%converged = .true.
@@ -234,17 +243,19 @@ contains
                                                    report%active(iteration), report%slipping(iteration))
    end subroutine record_iteration
 
-   !> Whether the iterate is converged (residual and, unless the residual is negligible, the
-   !> correction below their tolerances, on the path; with contact, no node held in stick that
-   !> the law would let slip: else they are released and the iterations go on, `outcome_released`),
-   !> has failed (the iteration limit, divergence) or goes on (`outcome_iterate`).
+   !> Whether the iterate is converged (residual and, unless the residual is negligible or
+   !> `waive_displacement`, the correction below their tolerances, on the path; with contact,
+   !> no node held in stick that the law would let slip: else they are released and the
+   !> iterations go on, `outcome_released`), has failed (the iteration limit, divergence) or
+   !> goes on (`outcome_iterate`).
    subroutine test_convergence(model, context, state, iteration, max_iterations, residual_norm, reference, &
-                               correction_norm, report, outcome, path)
+                               correction_norm, waive_displacement, report, outcome, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       integer, intent(in) :: iteration, max_iterations
       real(dp), intent(in) :: residual_norm, reference, correction_norm
+      logical, intent(in) :: waive_displacement
       type(newton_report_t), intent(inout) :: report
       integer, intent(out) :: outcome
       type(path_constraint_t), intent(in), optional :: path
@@ -254,8 +265,8 @@ contains
       u_norm = norm2(state%u)
       if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
           .and. on_path(model, state, path, iteration, u_norm)) then
-         if (residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
-             correction_norm <= model%controls%tol_displacement*u_norm) then
+         if (waive_displacement .or. residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference &
+             .or. correction_norm <= model%controls%tol_displacement*u_norm) then
             outcome = outcome_converged
             if (.not. state%has_contact) return
             ! nodes held in stick after a slip reversal that the law would let slip?
