@@ -7,7 +7,7 @@ module frix_contact_pass
    use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
    use frix_surface_load, only: face_area_weights
    use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes
-   use frix_contact_patches, only: surface_patches_t, surface_faces
+   use frix_contact_patches, only: surface_patches_t, surface_faces, free_edges
    use frix_friction_law, only: branch_free
    use frix_tie_mortar, only: tie_coupling_t
    implicit none
@@ -39,6 +39,10 @@ module frix_contact_pass
       integer, allocatable :: slave_index(:)
       real(dp), allocatable :: interface_force(:, :)
       integer, allocatable :: faces(:, :)      !! (4, n_faces) master face nodes, outward order
+      !> (4, n_faces) edge k of face f (its nodes k and mod(k, 4) + 1) belongs to no other master
+      !> face: a free edge, the master surface's boundary, beyond which a slave node is open
+      !> (frix_contact_search's nearest_face; docs/contact.md, "Edges and corners")
+      logical, allocatable :: free_edge(:, :)
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
       real(dp) :: face_size = 0.0_dp           !! mean size of the master faces (reference, length)
       !> smoothed normals (NORMALS Smoothed or Auto): the patch of every master face (within the
@@ -116,8 +120,9 @@ contains
       pass%area = node_area(pass%slave_nodes)
    end subroutine set_slave_nodes
 
-   !> The master faces of a surface and the search band's geometric part: half the mean face
-   !> size, a face's size being the mean of its diagonals over sqrt(2) (reference, length).
+   !> The master faces of a surface, their free edges and the search band's geometric part:
+   !> half the mean face size, a face's size being the mean of its diagonals over sqrt(2)
+   !> (reference, length).
    subroutine set_master_faces(mesh, surface, pass)
       type(mesh_t), intent(in) :: mesh
       type(surface_t), intent(in) :: surface
@@ -125,6 +130,7 @@ contains
       real(dp) :: coords(3, 4), size_sum
       integer :: k
       pass%faces = surface_faces(mesh, surface)
+      pass%free_edge = free_edges(mesh%n_nodes, pass%faces)
       size_sum = 0.0_dp
       do k = 1, size(surface%elements)
          coords = mesh%coords(:, pass%faces(:, k))

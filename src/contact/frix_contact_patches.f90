@@ -10,6 +10,9 @@
 !> nodal normals come from f's side only (facet-like), and they enter the kernel's tangent:
 !> f's own 4 nodes and its ring, the patch's other nodes (12 on a structured surface, at most
 !> max_ring_nodes). The decision is taken once, in the reference configuration.
+!>
+!> The free edges of a surface (free_edges) are its boundary: the face edges that belong to
+!> no other face of the surface (docs/contact.md, "Edges and corners").
 module frix_contact_patches
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
@@ -21,7 +24,7 @@ module frix_contact_patches
    private
 
    public :: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, check_patch_rings
-   public :: ring_nodes_of, patch_faces_of, all_faces_angle, surface_is_curved
+   public :: ring_nodes_of, patch_faces_of, all_faces_angle, surface_is_curved, free_edges
 
    !> A feature angle (degrees) at or above which every face sharing a node is in the patch
    !> (NORMALS Smoothed), without computing an angle: bit-for-bit the unfiltered patches.
@@ -144,6 +147,41 @@ contains
          within(k) = acos(max(-1.0_dp, min(1.0_dp, dot_product(own, normals(:, k))))) <= feature_angle*degree
       end do
    end function within_feature_angle
+
+   !> Whether each edge of each face of a surface (faces(4, n), mesh node numbers) is free: it
+   !> belongs to no other face of the surface, i.e. it is part of the surface's boundary. Edge k
+   !> of a face joins its nodes k and mod(k, 4) + 1 (in parent coordinates edge 1 lies at
+   !> xi2 = -1, 2 at xi1 = +1, 3 at xi2 = +1, 4 at xi1 = -1).
+   pure function free_edges(n_nodes, faces) result(free)
+      integer, intent(in) :: n_nodes          !! mesh nodes (faces hold numbers 1 .. n_nodes)
+      integer, intent(in) :: faces(:, :)      !! (4, n_faces)
+      logical :: free(4, size(faces, 2))
+      integer, allocatable :: node_start(:), node_faces(:)
+      integer :: f, k, j, first, second
+      call faces_around_nodes(n_nodes, faces, node_start, node_faces)
+      do f = 1, size(faces, 2)
+         do k = 1, 4
+            first = faces(k, f)
+            second = faces(mod(k, 4) + 1, f)
+            free(k, f) = .true.
+            do j = node_start(first) + 1, node_start(first + 1)
+               if (node_faces(j) /= f .and. has_edge(faces(:, node_faces(j)), first, second)) free(k, f) = .false.
+            end do
+         end do
+      end do
+   end function free_edges
+
+   !> Whether a face (4 node numbers, in order around it) has the edge joining two nodes.
+   pure logical function has_edge(face, first, second)
+      integer, intent(in) :: face(4), first, second
+      integer :: k
+      has_edge = .false.
+      do k = 1, 4
+         associate (a => face(k), b => face(mod(k, 4) + 1))
+            if ((a == first .and. b == second) .or. (a == second .and. b == first)) has_edge = .true.
+         end associate
+      end do
+   end function has_edge
 
    !> The faces around each node as compressed rows over the mesh's nodes:
    !> node_faces(node_start(n) + 1 : node_start(n + 1)) hold node n's faces, in face order.

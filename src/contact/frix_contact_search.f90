@@ -8,12 +8,15 @@
 !> inside it comes first (docs/contact.md, "Normals"). A face is a candidate when its
 !> current bounding box inflated by the search band holds the node and the node is at most the
 !> band above it (gap <= band). Candidates come from a uniform bucket grid of the boxes,
-!> rebuilt at every search (linear cost).
+!> rebuilt at every search (linear cost). A node whose closest point on its face is clamped
+!> onto a free edge of the master surface (its boundary, pass%free_edge) and lies beyond that
+!> edge by more than the extension zone gets no face: it is open (beyond_free_edge).
 !>
 !> Positions are current: x = X + u, X the mesh's reference coordinates (3, n_nodes), u the
 !> displacements node-major (3 n_nodes).
 module frix_contact_search
    use frix_kinds, only: dp
+   use frix_vector_algebra, only: cross_product
    use frix_face_projection, only: face_position, face_normal, closest_point_in_face, face_contains
    use frix_contact_kernel, only: patch_normals, smooth_projection, smooth_normal_at
    use frix_contact_patches, only: ring_nodes_of, patch_faces_of
@@ -25,6 +28,18 @@ module frix_contact_search
 
    real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
    integer, parameter :: max_cells = 200              !! most grid cells along an axis
+   !> The extension zone of a free edge of the master surface, as a fraction of the face's length
+   !> across that edge: a slave node up to this far beyond the edge still gets the face (so that
+   !> a node of coextensive surfaces that round-off or the deformation puts just beyond the
+   !> boundary is not lost), farther it is open. 0.1 is Abaqus' default for node-to-surface
+   !> contact (*CONTACT PAIR, EXTENSION ZONE: "a fraction of the end segment or facet edge
+   !> length", default 0.1; Abaqus Analysis User's Guide 6.12, 35.3.8 "Extending master
+   !> surfaces and slide lines").
+   real(dp), parameter :: extension_zone = 0.1_dp
+   !> The parent coordinate held along edge k of a face, and its value there (the edge order of
+   !> frix_contact_patches' free_edges).
+   integer, parameter :: edge_coordinate(4) = [2, 1, 2, 1]
+   real(dp), parameter :: edge_value(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]
 
    !> Uniform bucket grid of the master faces' inflated bounding boxes: the faces whose box
    !> meets cell c are cell_faces(cell_start(c) + 1 : cell_start(c + 1)); cells are numbered
@@ -118,7 +133,42 @@ contains
       ! smoothed normals: the nearest face whose normal projection lies inside it, else
       ! (beyond a free edge of the master surface, or no projection) the nearest face
       face = merge(best_inside_face, best_face, best_inside_face > 0)
+      ! the nearest face's closest point clamped: beyond the master surface's boundary, open (a
+      ! tie decides at its boundary by its own coverage rule, frix_tie_pass)
+      if (best_inside_face == 0 .and. best_face > 0 .and. .not. pass%tied) then
+         if (beyond_free_edge(master%x_faces(:, :, best_face), pass%free_edge(:, best_face), x_slave)) face = 0
+      end if
    end function nearest_face
+
+   !> Whether the closest point of x_slave on the bounded face x_face is clamped onto one of the
+   !> face's free edges (or a corner on one) with x_slave beyond that edge by more than the
+   !> extension zone. Beyond: d . m, d = x_slave - x_c (x_c the clamped point), m the unit
+   !> outward normal of the edge in the face's tangent plane at x_c (e x n, e the edge's
+   !> direction in face order, n the face normal); on an edge d . m is the whole tangential part
+   !> of d, at a corner only the part across the free edge counts. The zone: extension_zone
+   !> times the face's length across the edge (the mean of the two face edges that meet it;
+   !> current configuration).
+   pure logical function beyond_free_edge(x_face, free, x_slave) result(beyond)
+      real(dp), intent(in) :: x_face(3, 4), x_slave(3)
+      logical, intent(in) :: free(4)          !! the face's free edges (pass%free_edge)
+      real(dp) :: xi(2), offset(3), outward(3), across
+      logical :: fixed(2)
+      integer :: k
+      beyond = .false.
+      if (.not. any(free)) return
+      call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
+      offset = x_slave - face_position(x_face, xi)
+      do k = 1, 4
+         ! clamped onto edge k: closest_point_in_face sets the held coordinate to exactly -1 or +1
+         if (.not. (free(k) .and. fixed(edge_coordinate(k)) .and. xi(edge_coordinate(k)) == edge_value(k))) cycle
+         associate (first => x_face(:, k), second => x_face(:, mod(k, 4) + 1), &
+                    after => x_face(:, mod(k + 1, 4) + 1), before => x_face(:, mod(k + 2, 4) + 1))
+            outward = cross_product(second - first, face_normal(x_face, xi))
+            across = 0.5_dp*(norm2(after - second) + norm2(first - before))
+         end associate
+         if (dot_product(offset, outward) > extension_zone*across*norm2(outward)) beyond = .true.
+      end do
+   end function beyond_free_edge
 
    !> Make face f the best so far if it is nearer, or as near (within tie_tolerance) and the
    !> node's current face, so that a node on a shared edge does not chatter.
@@ -233,7 +283,8 @@ contains
    !> with the closest point of its reference position on the nearest master face within the
    !> search band (with smoothed normals the point along the smoothed normal where it lies on
    !> the face), so that friction acts from the first increment and a body held sideways only
-   !> by friction is supported from the first iteration. Nodes with no face get no anchor.
+   !> by friction is supported from the first iteration. Nodes with no face (above the band, or
+   !> beyond a free edge of the master surface by more than the extension zone) get no anchor.
    subroutine initial_anchors(coords, edge_tolerance, pass)
       real(dp), intent(in) :: coords(:, :)       !! reference coordinates (3, n_nodes)
       real(dp), intent(in) :: edge_tolerance     !! the pair's, parent coordinates

@@ -7,7 +7,9 @@
 !> test_contact_fixtures' fold_surface (a 90-degree fold, then 10-degree turns) the nodal normal
 !> of a face is the normalised sum of the unit normals of the faces kept around the node, so
 !> exactly the facet normal at the fold (only the face's own side kept) and the bisector
-!> profile_normal(t_s + 5 degrees) between two 10-degree-apart segments.
+!> profile_normal(t_s + 5 degrees) between two 10-degree-apart segments. Free edges: on the
+!> 3 x 3 grid of faces the edges on the grid's boundary, by hand; with the centre face taken
+!> out also the four edges around the hole.
 module test_contact_patches
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -16,7 +18,7 @@ module test_contact_patches
    use frix_mesh, only: mesh_t, surface_t
    use frix_face_projection, only: face_normal
    use frix_contact_patches, only: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, &
-                                   check_patch_rings, ring_nodes_of, patch_faces_of, all_faces_angle
+                                   check_patch_rings, ring_nodes_of, patch_faces_of, all_faces_angle, free_edges
    use frix_contact_kernel, only: patch_normals
    use test_contact_fixtures, only: grid_faces, fold_surface, profile_normal
    implicit none
@@ -34,7 +36,8 @@ contains
                new_unittest('pinwheel of 8 faces: 13 ring nodes, error', test_pinwheel), &
                new_unittest('feature angle 30: facet normals at a 90-degree fold, averaged on a curve', &
                             test_fold_and_curve), &
-               new_unittest('feature angle just below / above a 10-degree edge flips the patch', test_angle_flip)]
+               new_unittest('feature angle just below / above a 10-degree edge flips the patch', test_angle_flip), &
+               new_unittest('free edges: the boundary of a 3 x 3 grid, and around a hole', test_free_edges)]
    end subroutine collect_contact_patches
 
    !> A 3 x 3 x 1 block of unit HEX8 (nodes 1 + i + 4 j + 16 k) and its top surface (face 2).
@@ -81,6 +84,30 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_surface_faces
+
+   !> Grid face 1 + i + 3 j: edge 1 (y = j) free for j = 0, 2 (x = i + 1) for i = 2, 3
+   !> (y = j + 1) for j = 2, 4 (x = i) for i = 0; without the centre face 5 (i = j = 1) also
+   !> the edges of faces 2, 4, 6, 8 toward it.
+   subroutine test_free_edges(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: faces(4, 9), i, j
+      logical :: expected(4, 9), free(4, 9), holed(4, 8)
+      faces = grid_faces(3)
+      do j = 0, 2
+         do i = 0, 2
+            expected(:, 1 + i + 3*j) = [j == 0, i == 2, j == 2, i == 0]
+         end do
+      end do
+      free = free_edges(16, faces)
+      call check(error, all(free .eqv. expected), 'the boundary of the 3 x 3 grid')
+      if (allocated(error)) return
+      expected(3, 2) = .true.   ! face 2's top edge, face 4's right, face 6's left, face 8's bottom
+      expected(2, 4) = .true.
+      expected(4, 6) = .true.
+      expected(1, 8) = .true.
+      holed = free_edges(16, faces(:, [1, 2, 3, 4, 6, 7, 8, 9]))
+      call check(error, all(holed .eqv. expected(:, [1, 2, 3, 4, 6, 7, 8, 9])), 'around the hole of face 5')
+   end subroutine test_free_edges
 
    subroutine test_structured(error)
       type(error_t), allocatable, intent(out) :: error

@@ -1,10 +1,14 @@
 !> The contact search (frix_contact_search). References: on the flat unit grid of 3 x 3 faces
 !> in z = 0 (face 1 + i + 3 j spans [i, i + 1] x [j, j + 1]) the nearest face of a node above
 !> the surface is the one under it, by hand; a node higher than the search band, or outside
-!> every face box, gets none; beyond the surface's free edge the nearest (clamped) face wins;
-!> on an edge shared by two faces the node keeps its face; moving the master by u moves the
-!> answer with it. On a wavy 10 x 10 surface the bucket grid gives the same faces as a
-!> brute-force search over all faces. With smoothed normals a node placed along the smoothed
+!> every face box, gets none; on an edge shared by two faces the node keeps its face; moving
+!> the master by u moves the answer with it. Beyond the surface's free edge (its boundary) the
+!> nearest (clamped) face is kept within the extension zone, 0.1 of the face's length across
+!> the edge (0.1 on the unit grid, 0.2 across the edges x = const of a grid stretched to 2 in
+!> x, still 0.1 across y = const), farther the node gets none (also with smoothed normals,
+!> and no initial anchor), except in a tie. On a wavy 10 x 10 surface the bucket grid gives
+!> the same faces as a brute-force search over all faces (without free edges: the free-edge
+!> rule acts after the grid's choice). With smoothed normals a node placed along the smoothed
 !> normal below a face point gets that face and, as initial anchor, that point.
 module test_contact_search
    use frix_kinds, only: dp
@@ -13,7 +17,7 @@ module test_contact_search
    use frix_strings, only: to_string
    use frix_face_projection, only: closest_point_in_face, face_position, face_normal
    use frix_contact_kernel, only: smooth_normal_at
-   use frix_contact_patches, only: surface_patches, all_faces_angle
+   use frix_contact_patches, only: surface_patches, all_faces_angle, free_edges
    use frix_contact_pass, only: contact_pass_t, start_pass_state
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, face_nodal_normals
    use test_contact_fixtures, only: grid_faces, fold_surface
@@ -28,7 +32,10 @@ contains
 
    subroutine collect_contact_search(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
-      tests = [new_unittest('flat grid: face under the node, band, free edge, outside', test_flat), &
+      tests = [new_unittest('flat grid: face under the node, band, outside', test_flat), &
+               new_unittest('beyond a free edge: the extension zone, then open', test_free_edge), &
+               new_unittest('beyond a free edge: no face with smoothed normals, no anchor, tie kept', &
+                            test_free_edge_cases), &
                new_unittest('node on a shared edge keeps its current face', test_tie), &
                new_unittest('displaced master: the face moves with u', test_displaced), &
                new_unittest('wavy 10 x 10 surface: bucket grid = brute force', test_brute_force), &
@@ -60,6 +67,7 @@ contains
       end do
       coords(:, n_grid + 1:) = slaves
       pass%faces = grid_faces(n)
+      pass%free_edge = free_edges(size(coords, 2), pass%faces)
       pass%slave_nodes = [(n_grid + i, i=1, size(slaves, 2))]
       pass%band = band
       call start_pass_state(pass)
@@ -69,16 +77,65 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: coords(:, :), zero(:)
       type(contact_pass_t) :: pass
-      ! above face 5; slightly into face 7; above the band; beyond the free edge x = 3 next to
-      ! face 3; far outside
-      real(dp), parameter :: slaves(3, 5) = reshape([1.5_dp, 1.5_dp, 0.1_dp, 0.2_dp, 2.7_dp, -0.05_dp, &
-                                                     1.5_dp, 1.5_dp, 0.7_dp, 3.3_dp, 0.5_dp, 0.1_dp, &
-                                                     5.0_dp, 5.0_dp, 0.0_dp], [3, 5])
+      ! above face 5; slightly into face 7; above the band; far outside
+      real(dp), parameter :: slaves(3, 4) = reshape([1.5_dp, 1.5_dp, 0.1_dp, 0.2_dp, 2.7_dp, -0.05_dp, &
+                                                     1.5_dp, 1.5_dp, 0.7_dp, 5.0_dp, 5.0_dp, 0.0_dp], [3, 4])
       call grid_pass(3, slaves, coords, pass, .false.)
       allocate (zero(size(coords)), source=0.0_dp)
       call assign_faces(coords, zero, edge_tolerance, pass)
-      call check(error, all(pass%face == [5, 7, 0, 3, 0]), 'faces '//faces_text(pass%face))
+      call check(error, all(pass%face == [5, 7, 0, 0]), 'faces '//faces_text(pass%face))
    end subroutine test_flat
+
+   !> The unit 3 x 3 grid, 0.1 above it, beyond its free edges: x = 3 by 0.05 (inside the zone:
+   !> face 3), by 0.15 and 0.3 (open); beyond the corner (3, 3) by 0.05 in x and y (face 9), by
+   !> 0.05 in x and 0.2 in y (open); y = 0 by 0.05 (face 2). Then the grid stretched to 2 in x:
+   !> beyond x = 6 by 0.15 (zone 0.2: face 3), by 0.25 (open); beyond y = 0 by 0.15 (zone 0.1,
+   !> the face's length across that edge, not along it: open).
+   subroutine test_free_edge(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :), zero(:)
+      type(contact_pass_t) :: pass
+      real(dp), parameter :: slaves(3, 6) = reshape([3.05_dp, 0.5_dp, 0.1_dp, 3.15_dp, 0.5_dp, 0.1_dp, &
+                                                     3.3_dp, 0.5_dp, 0.1_dp, 3.05_dp, 3.05_dp, 0.1_dp, &
+                                                     3.05_dp, 3.2_dp, 0.1_dp, 1.5_dp, -0.05_dp, 0.1_dp], [3, 6])
+      real(dp), parameter :: stretched(3, 3) = reshape([6.15_dp, 0.5_dp, 0.1_dp, 6.25_dp, 0.5_dp, 0.1_dp, &
+                                                        3.0_dp, -0.15_dp, 0.1_dp], [3, 3])
+      call grid_pass(3, slaves, coords, pass, .false.)
+      allocate (zero(size(coords)), source=0.0_dp)
+      call assign_faces(coords, zero, edge_tolerance, pass)
+      call check(error, all(pass%face == [3, 0, 0, 9, 0, 2]), 'unit grid: faces '//faces_text(pass%face))
+      if (allocated(error)) return
+      call grid_pass(3, stretched, coords, pass, .false.)
+      coords(1, :16) = 2.0_dp*coords(1, :16)
+      call assign_faces(coords, zero(:size(coords)), edge_tolerance, pass)
+      call check(error, all(pass%face == [3, 0, 0]), 'stretched grid: faces '//faces_text(pass%face))
+   end subroutine test_free_edge
+
+   !> The unit 3 x 3 grid and nodes 0.1 above it beyond x = 3 by 0.05 and 0.3: with smoothed
+   !> normals (no normal projection inside a face: the facet rule) faces 3 and 0; the initial
+   !> anchors, the clamped point (3, 0.5) and none; a tie keeps both (its coverage decides).
+   subroutine test_free_edge_cases(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :), zero(:)
+      type(contact_pass_t) :: pass
+      real(dp), parameter :: slaves(3, 2) = reshape([3.05_dp, 0.5_dp, 0.1_dp, 3.3_dp, 0.5_dp, 0.1_dp], [3, 2])
+      call grid_pass(3, slaves, coords, pass, .false.)
+      call surface_patches(coords, pass%faces, all_faces_angle, pass%patches)
+      pass%smooth = .true.
+      call initial_anchors(coords, edge_tolerance, pass)
+      call check(error, all(pass%face == [3, 0]), 'smoothed normals: faces '//faces_text(pass%face))
+      if (allocated(error)) return
+      ! face 3 spans [2, 3] x [0, 1]: (3, 0.5) is xi = (1, 0)
+      call check(error, pass%has_anchor(1) .and. pass%anchor_face(1) == 3 .and. &
+                 maxval(abs(pass%anchor_xi(:, 1) - [1.0_dp, 0.0_dp])) <= 1.0e-14_dp .and. &
+                 .not. pass%has_anchor(2) .and. pass%anchor_face(2) == 0, 'anchors')
+      if (allocated(error)) return
+      call grid_pass(3, slaves, coords, pass, .false.)
+      pass%tied = .true.
+      allocate (zero(size(coords)), source=0.0_dp)
+      call assign_faces(coords, zero, edge_tolerance, pass)
+      call check(error, all(pass%face == [3, 3]), 'tie: faces '//faces_text(pass%face))
+   end subroutine test_free_edge_cases
 
    subroutine test_tie(error)
       type(error_t), allocatable, intent(out) :: error
@@ -125,6 +182,7 @@ contains
                          -1.0_dp + 2.0_dp*frac(0.5698402910_dp*i)]
       end do
       call grid_pass(n, slaves, coords, pass, .false.)
+      pass%free_edge = .false.   ! the grid's choice alone (test_free_edge: the rule after it)
       coords(3, :(n + 1)**2) = 0.3_dp*sin(coords(1, :(n + 1)**2))*cos(0.7_dp*coords(2, :(n + 1)**2))
       allocate (zero(size(coords)), source=0.0_dp)
       call assign_faces(coords, zero, edge_tolerance, pass)
@@ -208,6 +266,7 @@ contains
       call fold_surface(coords(:, :21), faces)
       coords(:, 22:) = slaves
       pass%faces = faces
+      pass%free_edge = free_edges(size(coords, 2), pass%faces)
       pass%slave_nodes = [22, 23, 24]
       pass%band = band
       call start_pass_state(pass)
