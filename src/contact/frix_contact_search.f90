@@ -33,8 +33,7 @@ module frix_contact_search
    !> a node of coextensive surfaces that round-off or the deformation puts just beyond the
    !> boundary is not lost), farther it is open. 0.1 is Abaqus' default for node-to-surface
    !> contact (*CONTACT PAIR, EXTENSION ZONE: "a fraction of the end segment or facet edge
-   !> length", default 0.1; Abaqus Analysis User's Guide 6.12, 35.3.8 "Extending master
-   !> surfaces and slide lines").
+   !> length", default 0.1; Abaqus Keywords Reference).
    real(dp), parameter :: extension_zone = 0.1_dp
    !> The parent coordinate held along edge k of a face, and its value there (the edge order of
    !> frix_contact_patches' free_edges).
@@ -88,6 +87,8 @@ contains
          do f = 1, size(pass%faces, 2)
             master%face_normals(:, :, f) = face_nodal_normals(coords, u, pass, f)
          end do
+      else
+         allocate (master%face_normals(3, 4, 0))   ! facet normals: none (allocated for a defined descriptor)
       end if
       do i = 1, size(pass%slave_nodes)
          associate (s => pass%slave_nodes(i))
