@@ -10,11 +10,13 @@
 #
 # Benchmarks (default: all but s4b; the default set takes about 10 minutes on one core, s4b
 # 2 more, most of it S3 with mu = 0.1):
-#   v5   two-pass patch test, EPSN 1e7-1e10 penalty, 1e6-1e9 augmented (PENTOL 1e-12 / 1e-11)
+#   v5   two-pass patch test, EPSN 1e7-1e13 penalty, 1e6-1e9 augmented (PENTOL 1e-12 / 1e-11,
+#        and 1e-10 at 1e8)
 #   s1   block on a deformable base, EPSN 1e3-1e7 (EPST = k_s = 1e4 held)
 #   s5   buried pipe mu 0.5, EPSN 1e4-1e7 (EPST 1e6 held)
 #   s3   punch, coarse mesh, mu 0.5 and 0.1, EPSN 1e5-1e8 (EPST 1e6 held)
-#   s4   block on a rigid plane, EPST 1e3-1e6 (EPSN 1e8), friction augmented (TMETHOD Augmented)
+#   s4   block on a rigid plane, EPST 1e3-1e6 (EPSN 1e8), friction augmented (TMETHOD Augmented);
+#        the penalty also at EPST 1e7
 #   s4b  the pull to full sliding, (EPSN, EPST) of its table, friction augmented
 #   s3f  S3 coarse mu 0.5 and 0.1, EPSN 1e8 held, EPST 1e4-1e7, friction augmented
 #   s5f  S5 mu 0.5, EPSN 1e6 held, EPST 1e4-1e7, friction augmented
@@ -26,7 +28,8 @@
 # tables' columns without it), yes (the default predictor only) or no.
 # Output: OUTDIR/<benchmark>.csv, columns benchmark, deck, method, tmethod, EPSN, EPST, PENTOL,
 # PREDICT, the quantities (bench/penalty_sweep_extract.py), t_end, Newton iterations,
-# augmentations, increments ended at the augmentation limit, exit code, wall seconds.
+# augmentations, increments ended at the augmentation limit, exit code, wall seconds. Exit
+# status 1 when a run failed (its row says which).
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 frix=${FRIX:-$root/build/frix}
@@ -40,6 +43,7 @@ fi
 out=$1; shift
 benchmarks=("$@")
 [ ${#benchmarks[@]} -gt 0 ] || benchmarks=(v5 s1 s5 s3 s4 s3f s5f)
+failed=0
 for bench in "${benchmarks[@]}"; do
     case $bench in v5|s1|s5|s3|s4|s4b|s3f|s5f) ;;
     *) echo "penalty_sweep.sh: unknown benchmark $bench (v5 s1 s5 s3 s4 s4b s3f s5f)" >&2; exit 2 ;; esac
@@ -81,6 +85,7 @@ run() {
     start=$(date +%s%N)
     "$frix" "$dir/$name.dck" --out "$dir" > "$dir/$name.log" 2>&1
     rc=$?
+    [ $rc -eq 0 ] || failed=$((failed + 1))
     seconds=$(( ($(date +%s%N) - start) / 1000000 ))
     echo "$bench,$(basename "$src" .dck),$method,$tmethod,$(value EPSN "$@"),$(value EPST "$@"),$(value PENTOL "$@"),$pred,$($extract "$bench" "$dir/$name" "$dir/$name.log"),$rc,$((seconds / 1000)).$(printf %03d $((seconds % 1000)))" \
         >> "$out/$bench.csv"
@@ -106,10 +111,11 @@ for bench in "${benchmarks[@]}"; do
     case $bench in
     v5)
         start_csv v5; deck=inputs/v5_contact_patch/v5_u3_2pass_augmented.dck
-        for e in 1.0e7 1.0e8 1.0e9 1.0e10; do penalty v5 "v5_epsn$e" $deck EPSN $e; done
+        for e in 1.0e7 1.0e8 5.0e8 1.0e9 1.0e10 1.0e11 1.0e12 1.0e13; do penalty v5 "v5_epsn$e" $deck EPSN $e; done
         augmented v5 v5_epsn1.0e6_pentol1e-12 $deck EPSN 1.0e6 PENTOL 1.0e-12
         augmented v5 v5_epsn1.0e7_pentol1e-12 $deck EPSN 1.0e7 PENTOL 1.0e-12
-        for e in 1.0e7 1.0e8 1.0e9; do augmented v5 "v5_epsn$e" $deck EPSN $e PENTOL 1.0e-11; done ;;
+        augmented v5 v5_epsn1.0e8_pentol1e-10 $deck EPSN 1.0e8 PENTOL 1.0e-10
+        for e in 1.0e7 1.0e8 5.0e8 1.0e9; do augmented v5 "v5_epsn$e" $deck EPSN $e PENTOL 1.0e-11; done ;;
     s1)
         start_csv s1; deck=inputs/s1_block/s1_deformable_base.dck
         penalty s1 s1_epsn1.0e3 $deck EPSN 1.0e3 EPST 1.0e4
@@ -136,7 +142,8 @@ for bench in "${benchmarks[@]}"; do
         for t in 1.0e3 1.0e4 1.0e5 1.0e6; do
             penalty s4 "s4_epst$t" $deck EPSN 1.0e8 EPST $t
             augmented s4 "s4_epst$t" $deck EPSN 1.0e8 EPST $t TMETHOD Augmented
-        done ;;
+        done
+        penalty s4 s4_epst1.0e7 $deck EPSN 1.0e8 EPST 1.0e7 ;;
     s4b)
         start_csv s4b; deck=inputs/s4_block/s4b_block.dck
         for pair in 1.0e8:1.0e3 1.0e8:1.0e4 1.0e8:1.0e5 1.0e8:1.0e6 1.0e6:1.0e4 1.0e7:1.0e4 1.0e9:1.0e4; do
@@ -160,3 +167,7 @@ for bench in "${benchmarks[@]}"; do
         done ;;
     esac
 done
+if [ $failed -gt 0 ]; then
+    echo "penalty_sweep.sh: $failed runs ended with a non-zero exit code (column exit_code)" >&2
+    exit 1
+fi

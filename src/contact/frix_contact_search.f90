@@ -128,17 +128,18 @@ contains
             distance = norm2(x_slave - closest)
             gap = dot_product(x_slave - closest, face_normal(x_face, xi))
             if (gap > pass%band) cycle
+            ! beyond the master surface's boundary by more than the extension zone: not this
+            ! face's (another face may still hold the node; a tie decides at its boundary by its
+            ! own coverage rule, frix_tie_pass)
+            if (.not. pass%tied) then
+               if (beyond_free_edge(x_face, pass%free_edge(:, f), x_slave)) cycle
+            end if
             call keep_nearer(f, distance, current, best, best_face)
          end do
       end if
       ! smoothed normals: the nearest face whose normal projection lies inside it, else
       ! (beyond a free edge of the master surface, or no projection) the nearest face
       face = merge(best_inside_face, best_face, best_inside_face > 0)
-      ! the nearest face's closest point clamped: beyond the master surface's boundary, open (a
-      ! tie decides at its boundary by its own coverage rule, frix_tie_pass)
-      if (best_inside_face == 0 .and. best_face > 0 .and. .not. pass%tied) then
-         if (beyond_free_edge(master%x_faces(:, :, best_face), pass%free_edge(:, best_face), x_slave)) face = 0
-      end if
    end function nearest_face
 
    !> Whether the closest point of x_slave on the bounded face x_face is clamped onto one of the

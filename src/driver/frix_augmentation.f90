@@ -1,18 +1,21 @@
 !> Augmented Lagrangian contact in the increment loop (docs/contact.md, "Augmented
 !> Lagrangian"): an increment is solved by Newton with the multipliers held (predicted from
 !> the last increments' with PREDICT, frix_contact_augmentation), then, while an
-!> augmented pass has an active slave node whose |gap| exceeds its tolerance, the
-!> multipliers are updated by Uzawa's rule (frix_contact_augmentation) and the increment is
-!> solved again from where the last solution ended, at most MAXAUG times (the largest over
+!> augmented pass has an active slave node whose |gap| (or stick slip) exceeds its tolerance,
+!> the multipliers are updated by Uzawa's rule (frix_contact_augmentation) and the increment
+!> is solved again from where the last solution ended, at most MAXAUG times (the largest over
 !> the pairs). The Uzawa iteration is the nested one of Simo & Laursen (Comput. Struct. 42
-!> (1992) 97-116): each Newton solution is exact for its multipliers, and each update brings
-!> the penetration down by about the ratio of the interface's stiffness to eps_N, and where
+!> (1992) 97-116): each Newton solution is an equilibrium for its multipliers, and each update
+!> brings the penetration down by about the ratio of the interface's stiffness to eps_N; where
 !> that is slow the penalties grow within the increment (the method of multipliers;
 !> frix_contact_augmentation's grow_penalties; the grown penalties carry over to the next
-!> increments). When the
-!> limit is reached with penetrations still beyond tolerance the increment is accepted with a
-!> warning (its equilibrium is converged; only the constraint is loose), as the progress
-!> lines say.
+!> increments). Every solution before the check passes is converged on the residual criterion
+!> alone (frix_newton_solver's residual_only: an inexact inner minimisation, Bertsekas,
+!> Constrained Optimization and Lagrange Multiplier Methods, 1982, 2.5); once it passes, the
+!> increment is solved to both criteria from there (`final`, mostly 0 or 1 iteration) and
+!> checked again. When the limit is reached with penetrations still beyond tolerance the
+!> increment is accepted with a warning (its equilibrium is converged; only the constraint is
+!> loose), as the progress lines say.
 module frix_augmentation
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -103,7 +106,10 @@ contains
             ! one iteration), and checked again
             intermediate = .false.
             call solve_again(label//'  final')
-            if (allocated(error) .or. .not. report%converged) return
+            if (allocated(error) .or. .not. report%converged) then
+               if (allocated(report%failure)) report%failure = report%failure//' in the final solution'
+               return
+            end if
             cycle
          end if
          k = k + 1

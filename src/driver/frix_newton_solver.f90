@@ -7,8 +7,9 @@
 !> an iterate whose residual is already below 1e-4 TOLRESID times the reference is accepted
 !> without the displacement criterion (the response was linear, as in Abaqus' "zero residual"
 !> rule). An intermediate solution of augmented Lagrangian contact (`residual_only`,
-!> frix_augmentation) is converged on the residual criterion alone: its multipliers are
-!> updated next anyway, and the solution the increment ends with meets both criteria.
+!> frix_augmentation) is converged on the residual criterion alone, after one correction at
+!> least: its multipliers are updated next anyway, and the solution the increment ends with
+!> meets both criteria.
 !> With contact, an iterate is converged only when no slave node is held in a friction
 !> branch other than the law's own (slip reversal, frix_contact_assembly). The energy norm
 !> printed per iteration is |du . r| of the correction just made.
@@ -265,8 +266,10 @@ contains
       u_norm = norm2(state%u)
       if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
           .and. on_path(model, state, path, iteration, u_norm)) then
-         if (waive_displacement .or. residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference &
-             .or. correction_norm <= model%controls%tol_displacement*u_norm) then
+         ! (residual_only after one correction at least: its caller acts on the solution)
+         if ((waive_displacement .and. iteration > 0) .or. &
+             residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
+             correction_norm <= model%controls%tol_displacement*u_norm) then
             outcome = outcome_converged
             if (.not. state%has_contact) return
             ! nodes held in stick after a slip reversal that the law would let slip?
