@@ -36,6 +36,8 @@ contains
                new_unittest('beyond a free edge: the extension zone, then open', test_free_edge), &
                new_unittest('beyond a free edge: no face with smoothed normals, no anchor, tie kept', &
                             test_free_edge_cases), &
+               new_unittest('beyond the free edge of a nearer face: the face under the node', &
+                            test_free_edge_nearer), &
                new_unittest('node on a shared edge keeps its current face', test_tie), &
                new_unittest('displaced master: the face moves with u', test_displaced), &
                new_unittest('wavy 10 x 10 surface: bucket grid = brute force', test_brute_force), &
@@ -136,6 +138,37 @@ contains
       call assign_faces(coords, zero, edge_tolerance, pass)
       call check(error, all(pass%face == [3, 3]), 'tie: faces '//faces_text(pass%face))
    end subroutine test_free_edge_cases
+
+   !> The unit 3 x 3 grid and a separate narrow face 10 (a second part of the master surface)
+   !> 0.04 below it, spanning x in [1.53, 1.63], y in [1, 2] (length across its edge x = 1.53:
+   !> 0.1, zone 0.01). A node sunk 0.05 into face 5 at (1.5, 1.5) is nearer to face 10's free
+   !> edge (0.032) than to face 5 (0.05), and 0.03 beyond that edge: face 10 is not its face, but
+   !> face 5, under it, still is.
+   subroutine test_free_edge_nearer(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: zero(:)
+      real(dp) :: coords(3, 21)
+      type(contact_pass_t) :: pass
+      real(dp), parameter :: narrow(3, 4) = reshape([1.53_dp, 1.0_dp, -0.04_dp, 1.63_dp, 1.0_dp, -0.04_dp, &
+                                                     1.63_dp, 2.0_dp, -0.04_dp, 1.53_dp, 2.0_dp, -0.04_dp], [3, 4])
+      integer :: i, j
+      ! nodes 1-16 the grid (node 1 + i + 4 j at (i, j, 0)), 17-20 the narrow face, 21 the slave
+      do j = 0, 3
+         do i = 0, 3
+            coords(:, 1 + i + 4*j) = [real(i, dp), real(j, dp), 0.0_dp]
+         end do
+      end do
+      coords(:, 17:20) = narrow
+      coords(:, 21) = [1.5_dp, 1.5_dp, -0.05_dp]
+      pass%faces = reshape([grid_faces(3), 17, 18, 19, 20], [4, 10])
+      pass%free_edge = free_edges(size(coords, 2), pass%faces)
+      pass%slave_nodes = [21]
+      pass%band = band
+      call start_pass_state(pass)
+      allocate (zero(size(coords)), source=0.0_dp)
+      call assign_faces(coords, zero, edge_tolerance, pass)
+      call check(error, all(pass%face == [5]), 'faces '//faces_text(pass%face))
+   end subroutine test_free_edge_nearer
 
    subroutine test_tie(error)
       type(error_t), allocatable, intent(out) :: error
