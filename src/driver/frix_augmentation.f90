@@ -12,10 +12,10 @@
 !> increments). Every solution before the check passes is converged on the residual criterion
 !> alone (frix_newton_solver's residual_only: an inexact inner minimisation, Bertsekas,
 !> Constrained Optimization and Lagrange Multiplier Methods, 1982, 2.5); once it passes, the
-!> increment is solved to both criteria from there (`final`, mostly 0 or 1 iteration) and
-!> checked again. When the limit is reached with penetrations still beyond tolerance the
-!> increment is accepted with a warning (its equilibrium is converged; only the constraint is
-!> loose), as the progress lines say.
+!> increment is solved to both criteria from there (`final`, one iteration mostly; none when the
+!> last solution met both anyway) and checked again. When the limit is reached with
+!> penetrations still beyond tolerance the increment is accepted with a warning (its
+!> equilibrium is converged; only the constraint is loose), as the progress lines say.
 module frix_augmentation
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -97,13 +97,14 @@ contains
       call solve_increment(model, context, state, time, max_iterations, label, report, error, path, intermediate)
       iterations = report%iterations
       if (allocated(error) .or. .not. report%converged .or. limit == 0) return
+      intermediate = .not. report%fully_converged
       k = 0
       do
          check = check_penetrations(model, state%contact)
          if (check%within .or. k == limit) then
             if (.not. intermediate) exit
-            ! the last solution converged on the residual alone: to both criteria now (mostly
-            ! one iteration), and checked again
+            ! the last solution converged on the residual alone: to both criteria now (one
+            ! iteration, mostly), and checked again
             intermediate = .false.
             call solve_again(label//'  final')
             if (allocated(error) .or. .not. report%converged) then
@@ -137,6 +138,8 @@ contains
          call solve_increment(model, context, state, solve_time, max_iterations, solve_label, report, error, &
                               path, intermediate)
          iterations = iterations + report%iterations
+         ! a solution that met both criteria anyway needs no final one
+         if (report%converged) intermediate = .not. report%fully_converged
       end subroutine solve_again
    end subroutine augmented_attempt
 

@@ -10,6 +10,9 @@ module frix_newton_report
    !> What happened in one increment.
    type :: newton_report_t
       logical :: converged = .false.
+      !> converged on both criteria (or the zero-residual rule), not on the residual alone
+      !> (frix_newton_solver's residual_only)
+      logical :: fully_converged = .false.
       integer :: iterations = 0
       !> per residual evaluation 0 .. max_iterations (0: before the first solve)
       real(dp), allocatable :: residual_norms(:)   !! ||r||

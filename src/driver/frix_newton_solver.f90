@@ -266,10 +266,10 @@ contains
       u_norm = norm2(state%u)
       if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
           .and. on_path(model, state, path, iteration, u_norm)) then
+         report%fully_converged = residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference &
+                                  .or. correction_norm <= model%controls%tol_displacement*u_norm
          ! (residual_only after one correction at least: its caller acts on the solution)
-         if ((waive_displacement .and. iteration > 0) .or. &
-             residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference .or. &
-             correction_norm <= model%controls%tol_displacement*u_norm) then
+         if (report%fully_converged .or. (waive_displacement .and. iteration > 0)) then
             outcome = outcome_converged
             if (.not. state%has_contact) return
             ! nodes held in stick after a slip reversal that the law would let slip?
