@@ -35,18 +35,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
                                 "postproc"))
 import s1_analytical  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from check_tally import check, summary  # noqa: E402
+
 LOADS = [50.0, 100.0, 150.0, 200.0, 250.0, 300.0]
-passed = failed = 0
-
-
-def check(condition, message):
-    global passed, failed
-    if condition:
-        passed += 1
-        print(f"PASS: {message}")
-    else:
-        failed += 1
-        print(f"FAIL: {message}")
 
 
 def main():
@@ -108,8 +100,7 @@ def main():
     means = [level["interior_shear_mean"] for level in interior]
     check(all(abs(m / 30.0 - 1) <= 0.005 for m in means),
           f"slip-zone interior: mean |t| = mu q = 30 within 0.5 %: {np.round(means, 3)}")
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return summary()
 
 
 if __name__ == "__main__":
