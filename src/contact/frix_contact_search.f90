@@ -132,7 +132,7 @@ contains
             ! face's (another face may still hold the node; a tie decides at its boundary by its
             ! own coverage rule, frix_tie_pass)
             if (.not. pass%tied) then
-               if (beyond_free_edge(x_face, pass%free_edge(:, f), x_slave)) cycle
+               if (beyond_free_edge(x_face, pass%free_edge(:, f), x_slave, xi, fixed)) cycle
             end if
             call keep_nearer(f, distance, current, best, best_face)
          end do
@@ -142,23 +142,22 @@ contains
       face = merge(best_inside_face, best_face, best_inside_face > 0)
    end function nearest_face
 
-   !> Whether the closest point of x_slave on the bounded face x_face is clamped onto one of the
-   !> face's free edges (or a corner on one) with x_slave beyond that edge by more than the
-   !> extension zone. Beyond: d . m, d = x_slave - x_c (x_c the clamped point), m the unit
+   !> Whether the closest point of x_slave on the bounded face x_face (parent coordinates xi,
+   !> `fixed` the clamped ones: closest_point_in_face's) is clamped onto one of the face's free
+   !> edges (or a corner on one) with x_slave beyond that edge by more than the extension zone. Beyond: d . m, d = x_slave - x_c (x_c the clamped point), m the unit
    !> outward normal of the edge in the face's tangent plane at x_c (e x n, e the edge's
    !> direction in face order, n the face normal); on an edge d . m is the whole tangential part
    !> of d, at a corner only the part across the free edge counts. The zone: extension_zone
    !> times the face's length across the edge (the mean of the two face edges that meet it;
    !> current configuration).
-   pure logical function beyond_free_edge(x_face, free, x_slave) result(beyond)
-      real(dp), intent(in) :: x_face(3, 4), x_slave(3)
+   pure logical function beyond_free_edge(x_face, free, x_slave, xi, fixed) result(beyond)
+      real(dp), intent(in) :: x_face(3, 4), x_slave(3), xi(2)
       logical, intent(in) :: free(4)          !! the face's free edges (pass%free_edge)
-      real(dp) :: xi(2), offset(3), outward(3), across
-      logical :: fixed(2)
+      logical, intent(in) :: fixed(2)
+      real(dp) :: offset(3), outward(3), across
       integer :: k
       beyond = .false.
       if (.not. any(free)) return
-      call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
       offset = x_slave - face_position(x_face, xi)
       do k = 1, 4
          ! clamped onto edge k: closest_point_in_face sets the held coordinate to exactly -1 or +1

@@ -84,7 +84,7 @@ contains
       type(penetration_check_t) :: check
       real(dp) :: change
       integer :: k, limit
-      logical :: grown, intermediate
+      logical :: grown
       predicted = .false.
       limit = 0
       if (state%has_contact) then
@@ -92,21 +92,19 @@ contains
          call start_penalty_growth(state%contact)
          if (predict) call predict_multipliers(model, state%contact, prediction_step(state, time), predicted)
       end if
-      ! with augmented pairs, every solution is intermediate until its constraints are met
-      intermediate = limit > 0
-      call solve_increment(model, context, state, time, max_iterations, label, report, error, path, intermediate)
+      ! with augmented pairs, every solution is intermediate (residual_only) until the check passes
+      call solve_increment(model, context, state, time, max_iterations, label, report, error, path, &
+                           residual_only=limit > 0)
       iterations = report%iterations
       if (allocated(error) .or. .not. report%converged .or. limit == 0) return
-      intermediate = .not. report%fully_converged
       k = 0
       do
          check = check_penetrations(model, state%contact)
          if (check%within .or. k == limit) then
-            if (.not. intermediate) exit
+            if (report%fully_converged) exit
             ! the last solution converged on the residual alone: to both criteria now (one
             ! iteration, mostly), and checked again
-            intermediate = .false.
-            call solve_again(label//'  final')
+            call solve_again(label//'  final', .false.)
             if (allocated(error) .or. .not. report%converged) then
                if (allocated(report%failure)) report%failure = report%failure//' in the final solution'
                return
@@ -118,8 +116,7 @@ contains
          change = augment_multipliers(model, state%contact)
          context%n_augmentations = context%n_augmentations + 1
          call print_augmentation(context, model, k, check, change, grown)
-         intermediate = .true.
-         call solve_again(label//'  aug'//to_string(k))
+         call solve_again(label//'  aug'//to_string(k), .true.)
          if (allocated(error) .or. .not. report%converged) then
             if (allocated(report%failure)) report%failure = report%failure//' in augmentation '//to_string(k)
             return
@@ -131,15 +128,14 @@ contains
    contains
       !> The increment solved again from where the last solution ended (path following: the
       !> load factor found is the start), its iterations counted.
-      subroutine solve_again(solve_label)
+      subroutine solve_again(solve_label, residual_only)
          character(len=*), intent(in) :: solve_label
+         logical, intent(in) :: residual_only
          real(dp) :: solve_time
          solve_time = state%time
          call solve_increment(model, context, state, solve_time, max_iterations, solve_label, report, error, &
-                              path, intermediate)
+                              path, residual_only)
          iterations = iterations + report%iterations
-         ! a solution that met both criteria anyway needs no final one
-         if (report%converged) intermediate = .not. report%fully_converged
       end subroutine solve_again
    end subroutine augmented_attempt
 
