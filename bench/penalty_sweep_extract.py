@@ -29,6 +29,8 @@ import subprocess
 import sys
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+sys.path.insert(0, os.path.join(ROOT, "postproc"))
+import frix_results as fr  # noqa: E402
 HEADERS = {
     "v5": ["traction_error", "stress_error"],
     "s1": ["ux_n31"],
@@ -42,12 +44,11 @@ HEADERS = {
 
 
 def history(base):
-    """Rows of <base>_history.csv as dicts (empty list without the file)."""
+    """<base>_history.csv (frix_results.History), None without a readable one."""
     try:
-        with open(base + "_history.csv") as stream:
-            return list(csv.DictReader(stream))
-    except OSError:
-        return []
+        return fr.read_history(base + "_history.csv")
+    except fr.UserError:
+        return None
 
 
 def max_slip(base, time):
@@ -88,16 +89,15 @@ def s4b(base):
 
 
 def quantities(bench, base):
-    rows = history(base)
-    t = float(rows[-1]["time"]) if rows else None
+    table = history(base)
+    t = float(table.column("time")[-1]) if table is not None and len(table.data) else None
     if bench == "v5":
         return v5(base), t
     if bench == "s4b":
         return s4b(base), t
-    if not rows:
+    if t is None:
         return [None] * len(HEADERS[bench]), None
-    last = rows[-1]
-    get = lambda column: float(last[column])  # noqa: E731
+    get = lambda column: float(table.column(column)[-1])  # noqa: E731
     if bench == "s1":
         values = [get("u1_n31")]
     elif bench in ("s3", "s3f"):
