@@ -87,7 +87,10 @@ run() {
     rc=$?
     [ $rc -eq 0 ] || failed=$((failed + 1))
     seconds=$(( ($(date +%s%N) - start) / 1000000 ))
-    echo "$bench,$(basename "$src" .dck),$method,$tmethod,$(value EPSN "$@"),$(value EPST "$@"),$(value PENTOL "$@"),$pred,$($extract "$bench" "$dir/$name" "$dir/$name.log"),$rc,$((seconds / 1000)).$(printf %03d $((seconds % 1000)))" \
+    # an extraction that fails (its error on stderr) leaves the row's quantities out and counts
+    local fields
+    fields=$($extract "$bench" "$dir/$name" "$dir/$name.log") || failed=$((failed + 1))
+    echo "$bench,$(basename "$src" .dck),$method,$tmethod,$(value EPSN "$@"),$(value EPST "$@"),$(value PENTOL "$@"),$pred,$fields,$rc,$((seconds / 1000)).$(printf %03d $((seconds % 1000)))" \
         >> "$out/$bench.csv"
     tail -n 1 "$out/$bench.csv"
 }

@@ -148,4 +148,4 @@ def main(args):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    fr.run_main(main, sys.argv[1:])
