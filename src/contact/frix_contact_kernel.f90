@@ -49,13 +49,14 @@ module frix_contact_kernel
                                operator(+), operator(-), operator(*), operator(/), operator(**)
    use frix_face_projection, only: face_node_xi, face_node_eta, face_shape_functions, face_position, &
                                    face_normal, project_onto_face, closest_point_in_face, face_contains
+   use frix_smoothed_normals, only: patch_normals, patch_normal_derivatives, smooth_projection, smooth_normal_at
    use frix_contact_parameters, only: contact_parameters_t
    use frix_friction_law, only: branch_free
    implicit none
    private
 
    public :: contact_point_result_t, node_face_contact, node_plane_contact
-   public :: patch_normals, smooth_projection, smooth_normal_at, max_ring_nodes
+   public :: max_ring_nodes
    public :: contact_open, contact_stick, contact_slip
 
    !> not active (penalty: g >= 0), or outside the face without clamp: no force
@@ -89,15 +90,11 @@ module frix_contact_kernel
    !> microseconds.
    integer, parameter :: dual_newton_iterations = 1
 
-   !> Most ring nodes a smoothed-normal patch may have besides the face's 4 (with the slave and
-   !> an anchor face: 3 (1 + 4 + 4 + 12) = 63 = dual_size unknowns); 12 is the ring of a face
-   !> whose 4 nodes each have 4 faces around them (a structured quadrilateral surface).
+   !> Most ring nodes a smoothed-normal patch may have besides the face's 4; 12 is the ring of a
+   !> face whose 4 nodes each have 4 faces around them (a structured quadrilateral surface).
+   !> The ring nodes enter the tangent through the nodal normals' derivatives, not as dual
+   !> unknowns, so this bounds only the callers' arrays.
    integer, parameter :: max_ring_nodes = 12
-   !> Newton iterations and step tolerance (parent coordinates) of the smoothed-normal projection.
-   integer, parameter :: smooth_projection_iterations = 30
-   real(dp), parameter :: smooth_projection_tolerance = 1.0e-13_dp
-   !> a step below this that is not half the previous one has reached round-off: converged
-   real(dp), parameter :: stagnation_step = 1.0e-9_dp
 
 contains
 
@@ -155,11 +152,11 @@ contains
       real(dp), intent(in), optional :: tangential_multiplier(3)
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
-      type(dual_t) :: xr(3, max_ring_nodes), nodal(3, 4), residual(2)
+      type(dual_t) :: nodal(3, 4), residual(2)
       real(dp) :: inverse(2, 2), xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
       real(dp) :: jacobian(2, 2), nodal_real(3, 4), lambda
       logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face, smooth
-      integer :: a, k, n_unknowns, used_branch, ring_first
+      integer :: a, k, n_unknowns, n_direct, used_branch
 
       other_face = present(x_anchor_face)
       smooth = present(patch_faces) .and. present(x_ring)
@@ -167,9 +164,9 @@ contains
       if (present(branch)) used_branch = branch
       lambda = 0.0_dp
       if (present(multiplier)) lambda = multiplier
-      n_unknowns = merge(27, 15, other_face)
-      ring_first = n_unknowns + 1
-      if (smooth) n_unknowns = n_unknowns + 3*size(x_ring, 2)
+      n_direct = merge(27, 15, other_face)
+      n_unknowns = n_direct
+      if (smooth) n_unknowns = n_direct + 3*size(x_ring, 2)
       fint = 0.0_dp
       tangent = 0.0_dp
       if (smooth) then
@@ -213,10 +210,10 @@ contains
          xa = xm
       end if
       if (smooth) then
-         do a = 1, size(x_ring, 2)
-            xr(:, a) = dual_variable(x_ring(:, a), ring_first + 3*(a - 1))
+         ! the nodal normals as unknowns n_direct + 1 .. n_direct + 12 (chain_nodal_normals)
+         do a = 1, 4
+            nodal(:, a) = dual_variable(nodal_real(:, a), n_direct + 3*a - 2)
          end do
-         call patch_nodal_normals(xm, xr(:, :size(x_ring, 2)), patch_faces, nodal)
       end if
 
       xi = dual_constant(xi_start)
@@ -302,9 +299,30 @@ contains
       end do
       do k = 1, 15
          fint(k) = fd(k)%value
-         tangent(k, :) = fd(k)%gradient(:n_unknowns)
+         tangent(k, :n_direct) = fd(k)%gradient(:n_direct)
       end do
+      if (smooth) call chain_nodal_normals(fd, n_direct, x_master, x_ring, patch_faces, tangent)
    end subroutine node_face_contact
+
+   !> The tangent's part through the nodal normals: d fint/d x_b += (d fint/d n_a)(d n_a/d x_b)
+   !> for the patch's nodes b (the face's, columns 4-15, and the ring's, columns n_direct + 1
+   !> on), d fint/d n_a from the duals' unknowns n_direct + 1 .. n_direct + 12.
+   subroutine chain_nodal_normals(fd, n_direct, x_master, x_ring, patch_faces, tangent)
+      type(dual_t), intent(in) :: fd(15)
+      integer, intent(in) :: n_direct
+      real(dp), intent(in) :: x_master(3, 4), x_ring(:, :)
+      integer, intent(in) :: patch_faces(:, :)
+      real(dp), intent(inout) :: tangent(:, :)
+      real(dp) :: nodal(3, 4), derivative(12, 3*(4 + size(x_ring, 2))), by_normal(15, 12), chained(15, 3*(4 + size(x_ring, 2)))
+      integer :: k
+      call patch_normal_derivatives(x_master, x_ring, patch_faces, nodal, derivative)
+      do k = 1, 15
+         by_normal(k, :) = fd(k)%gradient(n_direct + 1:n_direct + 12)
+      end do
+      chained = matmul(by_normal, derivative)
+      tangent(:15, 4:15) = tangent(:15, 4:15) + chained(:, :12)
+      tangent(:15, n_direct + 1:n_direct + 3*size(x_ring, 2)) = chained(:, 13:)
+   end subroutine chain_nodal_normals
 
    !> One slave node against a fixed rigid plane through `plane_point` with normal
    !> `plane_normal` (pointing out of the rigid body, towards the slave side; normalised here).
@@ -480,34 +498,6 @@ contains
       xi(free) = dual_dot(xs - middle, edge)/dual_dot(edge, edge)
    end subroutine edge_point
 
-   !> Averaged nodal normals n_a (a = 1..4, the face's nodes) of a patch: the normalised sum,
-   !> over the patch faces that hold node a, of their unit normal at that node's corner.
-   pure subroutine patch_nodal_normals(xm, xr, patch_faces, nodal)
-      type(dual_t), intent(in) :: xm(3, 4), xr(:, :)
-      integer, intent(in) :: patch_faces(:, :)
-      type(dual_t), intent(out) :: nodal(3, 4)
-      type(dual_t) :: corner_face(3, 4), shape(4), x(3), a1(3), a2(3), face_unit(3)
-      integer :: a, f, j, b
-      do a = 1, 4
-         nodal(:, a) = dual_constant(0.0_dp)
-         do f = 1, size(patch_faces, 2)
-            j = findloc(patch_faces(:, f), a, dim=1)
-            if (j == 0) cycle
-            do b = 1, 4
-               if (patch_faces(b, f) <= 4) then
-                  corner_face(:, b) = xm(:, patch_faces(b, f))
-               else
-                  corner_face(:, b) = xr(:, patch_faces(b, f) - 4)
-               end if
-            end do
-            call face_geometry(corner_face, dual_constant([face_node_xi(j), face_node_eta(j)]), shape, x, a1, a2)
-            face_unit = dual_cross(a1, a2)
-            nodal(:, a) = nodal(:, a) + face_unit/dual_norm(face_unit)
-         end do
-         nodal(:, a) = nodal(:, a)/dual_norm(nodal(:, a))
-      end do
-   end subroutine patch_nodal_normals
-
    !> The smoothed normal n = m/|m|, m = sum_a N_a n_a, from the shape functions at xi.
    pure function smooth_normal(nodal, shape) result(normal)
       type(dual_t), intent(in) :: nodal(3, 4), shape(4)
@@ -533,27 +523,6 @@ contains
       residual(2) = dual_dot(distance, a2) - normal_distance*dual_dot(normal, a2)
    end subroutine smooth_residual
 
-   !> The averaged nodal normals of a patch (real values; see patch_nodal_normals): column a
-   !> for the face's node a. x_ring and patch_faces as for node_face_contact.
-   pure function patch_normals(x_face, x_ring, patch_faces) result(nodal_real)
-      real(dp), intent(in) :: x_face(3, 4), x_ring(:, :)
-      integer, intent(in) :: patch_faces(:, :)
-      real(dp) :: nodal_real(3, 4)
-      type(dual_t) :: nodal(3, 4)
-      call patch_nodal_normals(dual_constant(x_face), dual_constant(x_ring), patch_faces, nodal)
-      nodal_real = nodal%value
-   end function patch_normals
-
-   !> The smoothed normal at xi from real nodal normals.
-   pure function smooth_normal_at(nodal_real, xi) result(normal)
-      real(dp), intent(in) :: nodal_real(3, 4), xi(2)
-      real(dp) :: normal(3), shape(4), d_xi(4), d_eta(4)
-      type(dual_t) :: normal_d(3)
-      call face_shape_functions(xi, shape, d_xi, d_eta)
-      normal_d = smooth_normal(dual_constant(nodal_real), dual_constant(shape))
-      normal = normal_d%value
-   end function smooth_normal_at
-
    !> Inverse of a 2 x 2 matrix (Cramer's rule); the caller makes sure it is regular.
    pure function inverse_2x2(matrix) result(inverse)
       real(dp), intent(in) :: matrix(2, 2)
@@ -561,47 +530,6 @@ contains
       inverse = reshape([matrix(2, 2), -matrix(2, 1), -matrix(1, 2), matrix(1, 1)], [2, 2]) &
                 /(matrix(1, 1)*matrix(2, 2) - matrix(1, 2)*matrix(2, 1))
    end function inverse_2x2
-
-   !> Projection of `point` onto the face along the smoothed normal field of the nodal
-   !> normals `nodal_real`: Newton on r(xi) = 0 (smooth_residual) from the facet closest point,
-   !> with the exact Jacobian dr/dxi (duals seeded in xi), returned at the solution.
-   !> Not converged: no solution within the iteration limit or a singular Jacobian.
-   pure subroutine smooth_projection(x_face, nodal_real, point, xi, converged, jacobian)
-      real(dp), intent(in) :: x_face(3, 4), nodal_real(3, 4), point(3)
-      real(dp), intent(out) :: xi(2)
-      logical, intent(out) :: converged
-      real(dp), intent(out) :: jacobian(2, 2)
-      type(dual_t) :: xi_d(2), residual(2)
-      real(dp) :: step(2), determinant, previous_step
-      logical :: facet_converged
-      integer :: iteration
-      previous_step = huge(1.0_dp)
-      call project_onto_face(x_face, point, xi, facet_converged)
-      if (.not. facet_converged .or. any(abs(xi) > 2.0_dp)) xi = 0.0_dp
-      converged = .false.
-      do iteration = 1, smooth_projection_iterations + 1
-         xi_d = dual_variable(xi, 1)
-         call smooth_residual(dual_constant(point), dual_constant(x_face), dual_constant(nodal_real), xi_d, residual)
-         jacobian(1, :) = residual(1)%gradient(1:2)
-         jacobian(2, :) = residual(2)%gradient(1:2)
-         determinant = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
-         if (.not. (abs(determinant) > 0.0_dp)) then
-            converged = .false.
-            return
-         end if
-         if (converged .or. iteration > smooth_projection_iterations) return
-         step = matmul(inverse_2x2(jacobian), residual%value)
-         ! at most half a face per step (a zero step is a converged one)
-         if (maxval(abs(step)) > 1.0_dp) step = step/maxval(abs(step))
-         xi = xi - step
-         if (any(abs(xi) > 10.0_dp)) return
-         ! converged: a step below the tolerance, or steps that stopped shrinking at round-off
-         ! level (far from the origin the residual's round-off exceeds the tolerance)
-         converged = maxval(abs(step)) < smooth_projection_tolerance .or. &
-                     (maxval(abs(step)) < stagnation_step .and. maxval(abs(step)) >= 0.5_dp*previous_step)
-         previous_step = maxval(abs(step))
-      end do
-   end subroutine smooth_projection
 
    !> (I - n n) lambda_T, the tangent-plane part of a tangential multiplier (0 when absent):
    !> with augmented friction the anchor of a slipping node is where the trial traction

@@ -18,7 +18,7 @@ module frix_contact_search
    use frix_kinds, only: dp
    use frix_vector_algebra, only: cross_product
    use frix_face_projection, only: face_position, face_normal, closest_point_in_face, face_contains
-   use frix_contact_kernel, only: patch_normals, smooth_projection, smooth_normal_at
+   use frix_smoothed_normals, only: patch_normals, smooth_projection, smooth_normal_at
    use frix_contact_patches, only: ring_nodes_of, patch_faces_of
    use frix_contact_pass, only: contact_pass_t
    implicit none

@@ -3,7 +3,7 @@
 !> A dual number carries a value v and its gradient dv/dq with respect to up to `dual_size`
 !> seeded unknowns q (for the contact kernel: the current coordinates of a slave node, its
 !> 4-node master face, the 4-node face that carries its slip anchor and, with smoothed
-!> normals, the up to 12 further nodes of the master patch: 3 x 21 = 63). Every operation applies the chain rule to the gradient, so a
+!> normals, the face's 4 nodal normals: 3 x 13 = 39). Every operation applies the chain rule to the gradient, so a
 !> computation written with `dual_t` yields the exact derivative of the discrete algorithm it
 !> performs (Griewank & Walther, *Evaluating Derivatives*, 2nd ed., SIAM 2008, ch. 3; this is
 !> how AceGen-generated contact elements obtain consistent tangents, Korelc & Wriggers,
@@ -26,7 +26,7 @@ module frix_dual_number
    public :: operator(<), operator(<=), operator(>), operator(>=)
    public :: sqrt, abs, assignment(=)
 
-   integer, parameter :: dual_size = 63  !! maximum number of seeded unknowns
+   integer, parameter :: dual_size = 39  !! maximum number of seeded unknowns
 
    !> A value and its gradient with respect to the seeded unknowns.
    type :: dual_t

@@ -5,7 +5,7 @@ module frix_vector_algebra
    implicit none
    private
 
-   public :: cross_product, determinant, invert3
+   public :: cross_product, skew, determinant, invert3
 
 contains
 
@@ -18,6 +18,15 @@ contains
                  left(3)*right(1) - left(1)*right(3), &
                  left(1)*right(2) - left(2)*right(1)]
    end function cross_product
+
+   !> The matrix [v]x with [v]x w = v x w.
+   pure function skew(vector) result(matrix)
+      real(dp), intent(in) :: vector(3)
+      real(dp) :: matrix(3, 3)
+      matrix = reshape([0.0_dp, vector(3), -vector(2), &
+                        -vector(3), 0.0_dp, vector(1), &
+                        vector(2), -vector(1), 0.0_dp], [3, 3])
+   end function skew
 
    !> det of a 3 x 3 matrix by cofactors of the first row.
    pure function determinant(matrix) result(det)

@@ -172,6 +172,9 @@ contains
          context%n_augmentations
       write (*, '(a,t40,i12)') 'frix: stat factorizations', context%solver%n_factorizations
       write (*, row) 'frix: stat assembly_seconds', context%assembly_seconds
+      write (*, row) 'frix: stat element_seconds', context%element_seconds
+      if (has_contact) write (*, row) 'frix: stat contact_search_seconds', context%search_seconds
+      if (has_contact) write (*, row) 'frix: stat contact_seconds', context%contact_seconds
       analyse = 0.0_dp
       factorize = 0.0_dp
       solve = 0.0_dp

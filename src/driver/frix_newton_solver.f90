@@ -75,6 +75,9 @@ module frix_newton_solver
       real(dp), allocatable :: step_window(:)
       logical :: quiet = .false.
       real(dp) :: assembly_seconds = 0.0_dp    !! element loop + scatter + loads, accumulated [s]
+      !> the parts of assembly_seconds: element loop with its scatter, contact search, contact
+      !> kernels with their scatter [s]
+      real(dp) :: element_seconds = 0.0_dp, search_seconds = 0.0_dp, contact_seconds = 0.0_dp
       integer :: n_assemblies = 0
       integer :: n_iterations = 0              !! Newton corrections of the whole run
       integer :: n_line_search_trials = 0      !! shortened steps tried by the contact line search
@@ -425,30 +428,39 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: predictor   !! first iteration of the increment
       type(error_t), allocatable :: element_error
-      real(dp) :: start
+      real(dp) :: start, lap
       start = wall_clock_seconds()
       if (state%has_contact) then
          call search_contact(model, state%contact, state%u, context%matrix, error)
          if (allocated(error)) return
       end if
+      lap = wall_clock_seconds()
+      context%search_seconds = context%search_seconds + (lap - start)
       if (with_tangent) then
          call assemble_internal(model, state, context%fint, element_error, matrix=context%matrix)
       else
          call assemble_internal(model, state, context%fint, element_error)
       end if
+      context%element_seconds = context%element_seconds + (wall_clock_seconds() - lap)
       if (allocated(element_error)) then
          failure = element_error%message
          return
       end if
       call check_finite(model, context%fint, 'internal force', failure)
       if (allocated(failure)) return
-      if (with_tangent) then
-         if (state%has_contact) &
+      lap = wall_clock_seconds()
+      if (state%has_contact) then
+         if (with_tangent) then
             call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor)
+         else
+            call assemble_contact(model, state%contact, state%u, context%fint)
+         end if
+      end if
+      context%contact_seconds = context%contact_seconds + (wall_clock_seconds() - lap)
+      if (with_tangent) then
          call assemble_external(model, time, state%u, context%fext, matrix=context%matrix, &
                                 step_window=context%step_window)
       else
-         if (state%has_contact) call assemble_contact(model, state%contact, state%u, context%fint)
          call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
       if (state%has_contact) call check_finite(model, context%fint, 'contact force', failure)

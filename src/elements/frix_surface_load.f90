@@ -13,7 +13,7 @@
 !> d1 = x3 - x1, d2 = x4 - x2 (exact also for a warped face).
 module frix_surface_load
    use frix_kinds, only: dp
-   use frix_vector_algebra, only: cross_product
+   use frix_vector_algebra, only: cross_product, skew
    implicit none
    private
 
@@ -105,13 +105,4 @@ contains
       d_xi = 0.25_dp*face_node_xi*(1.0_dp + xi(2)*face_node_eta)
       d_eta = 0.25_dp*face_node_eta*(1.0_dp + xi(1)*face_node_xi)
    end subroutine face_shape_functions
-
-   !> The matrix [v]x with [v]x w = v x w.
-   pure function skew(vector) result(matrix)
-      real(dp), intent(in) :: vector(3)
-      real(dp) :: matrix(3, 3)
-      matrix = reshape([0.0_dp, vector(3), -vector(2), &
-                        -vector(3), 0.0_dp, vector(1), &
-                        vector(2), -vector(1), 0.0_dp], [3, 3])
-   end function skew
 end module frix_surface_load

@@ -7,8 +7,8 @@ module test_contact_fixtures
    use frix_coulomb_friction, only: new_coulomb_friction
    use frix_penalty_normal_law, only: new_penalty_normal_law
    use frix_contact_parameters, only: contact_parameters_t
-   use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, patch_normals, &
-                                  smooth_normal_at
+   use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact
+   use frix_smoothed_normals, only: patch_normals, smooth_normal_at
    use frix_face_projection, only: face_position, face_normal
    implicit none
    private

@@ -19,7 +19,7 @@ module test_contact_patches
    use frix_face_projection, only: face_normal
    use frix_contact_patches, only: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, &
                                    check_patch_rings, ring_nodes_of, patch_faces_of, all_faces_angle, free_edges
-   use frix_contact_kernel, only: patch_normals
+   use frix_smoothed_normals, only: patch_normals
    use test_contact_fixtures, only: grid_faces, fold_surface, profile_normal
    implicit none
    private

@@ -27,7 +27,7 @@ module test_contact_physics
    use frix_face_projection, only: face_position
    use test_contact_fixtures, only: flat_face, warped_face, make_parameters, slave_below, grid_patch, &
                                     slave_below_smoothed
-   use frix_contact_kernel, only: patch_normals, smooth_normal_at
+   use frix_smoothed_normals, only: patch_normals, smooth_normal_at
    use frix_face_projection, only: face_normal
    implicit none
    private

@@ -16,7 +16,7 @@ module test_contact_search
    use frix_testing, only: unittest_t, new_unittest, check, check_close
    use frix_strings, only: to_string
    use frix_face_projection, only: closest_point_in_face, face_position, face_normal
-   use frix_contact_kernel, only: smooth_normal_at
+   use frix_smoothed_normals, only: smooth_normal_at
    use frix_contact_patches, only: surface_patches, all_faces_angle, free_edges
    use frix_contact_pass, only: contact_pass_t, start_pass_state
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, face_nodal_normals
