@@ -10,6 +10,7 @@ program test_contact
    use test_contact_physics, only: collect_contact_physics
    use test_contact_patches, only: collect_contact_patches
    use test_contact_search, only: collect_contact_search
+   use test_smoothed_normals, only: collect_smoothed_normals
    implicit none
    call run_suites([new_testsuite('dual_number', collect_dual_number), &
                     new_testsuite('face_projection', collect_face_projection), &
@@ -19,5 +20,6 @@ program test_contact
                     new_testsuite('contact_tangent', collect_contact_tangent), &
                     new_testsuite('contact_physics', collect_contact_physics), &
                     new_testsuite('contact_patches', collect_contact_patches), &
-                    new_testsuite('contact_search', collect_contact_search)])
+                    new_testsuite('contact_search', collect_contact_search), &
+                    new_testsuite('smoothed_normals', collect_smoothed_normals)])
 end program test_contact
