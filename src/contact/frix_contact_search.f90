@@ -5,7 +5,11 @@
 !> or corner point when the node lies beyond it) is nearest; the node's current face is kept
 !> on ties, so that a node on an edge shared by two faces does not chatter between them. With
 !> smoothed normals the nearest face whose normal projection along the smoothed normals lies
-!> inside it comes first (docs/contact.md, "Normals"). A face is a candidate when its
+!> inside it comes first (docs/contact.md, "Normals"); the candidates are projected along the
+!> smoothed normals in the order of their facet distance (the distance to the bounded face's
+!> closest point, a lower bound of the distance to any point of the face) until none left can
+!> be nearer than the nearest found, and a face's nodal normals are computed when it is first
+!> projected in a search. A face is a candidate when its
 !> current bounding box inflated by the search band holds the node and the node is at most the
 !> band above it (gap <= band). Candidates come from a uniform bucket grid of the boxes,
 !> rebuilt at every search (linear cost). A node whose closest point on its face is clamped
@@ -55,10 +59,23 @@ module frix_contact_search
    type :: master_state_t
       real(dp), allocatable :: x_faces(:, :, :)     !! (3, 4, n_faces) current face nodes
       !> (3, 4, n_faces) smoothed nodal normals of each face's nodes: per face, since with a
-      !> feature angle a node on a sharp edge has one normal on each side of it
+      !> feature angle a node on a sharp edge has one normal on each side of it; those of face f
+      !> are set once has_normals(f)
       real(dp), allocatable :: face_normals(:, :, :)
+      logical, allocatable :: has_normals(:)
       type(face_grid_t) :: grid
    end type master_state_t
+
+   !> A candidate face of a slave node: its facet distance (to the bounded face's closest point)
+   !> and, once projected along the smoothed normals, whether that projection qualifies
+   !> (inside the face, gap within the band) and its distance.
+   type :: candidate_t
+      integer :: face = 0
+      real(dp) :: distance = 0.0_dp
+      integer :: position = 0            !! in the grid's order
+      logical :: qualifies = .false.
+      real(dp) :: smooth_distance = 0.0_dp
+   end type candidate_t
 
 contains
 
@@ -82,11 +99,8 @@ contains
       end do
       call build_face_grid(master%x_faces, pass%band, master%grid)
       if (pass%smooth) then
-         ! the averaged nodal normals of every master face, once per search
          allocate (master%face_normals(3, 4, size(pass%faces, 2)))
-         do f = 1, size(pass%faces, 2)
-            master%face_normals(:, :, f) = face_nodal_normals(coords, u, pass, f)
-         end do
+         allocate (master%has_normals(size(pass%faces, 2)), source=.false.)
       else
          allocate (master%face_normals(3, 4, 0))   ! facet normals: none (allocated for a defined descriptor)
       end if
@@ -94,53 +108,134 @@ contains
          associate (s => pass%slave_nodes(i))
             x_slave = coords(:, s) + u(3*s - 2:3*s)
          end associate
-         pass%face(i) = nearest_face(pass, master, x_slave, pass%face(i), edge_tolerance)
+         pass%face(i) = nearest_face(coords, u, pass, master, x_slave, pass%face(i), edge_tolerance)
       end do
    end subroutine assign_faces
 
    !> The face given to a slave node at x_slave (0: none), `current` its face so far.
-   integer function nearest_face(pass, master, x_slave, current, edge_tolerance) result(face)
+   integer function nearest_face(coords, u, pass, master, x_slave, current, edge_tolerance) result(face)
+      real(dp), intent(in) :: coords(:, :), u(:)
       type(contact_pass_t), intent(in) :: pass
-      type(master_state_t), intent(in) :: master
+      type(master_state_t), intent(inout) :: master
       real(dp), intent(in) :: x_slave(3)
       integer, intent(in) :: current
       real(dp), intent(in) :: edge_tolerance
-      real(dp) :: x_face(3, 4), xi(2), closest(3), distance, gap, best, best_inside
-      integer :: k, f, c, best_face, best_inside_face
-      logical :: fixed(2), inside
+      real(dp) :: x_face(3, 4), xi(2), closest(3), distance, gap, best
+      integer :: k, f, c, best_face, n_candidates
+      logical :: fixed(2)
+      type(candidate_t), allocatable :: candidates(:)
       best = 0.5_dp*huge(1.0_dp)   ! best*(1 + tie_tolerance) must not overflow
       best_face = 0
-      best_inside = best
-      best_inside_face = 0
+      face = 0
       c = grid_cell(master%grid, x_slave)
-      if (c > 0) then
-         do k = master%grid%cell_start(c) + 1, master%grid%cell_start(c + 1)
-            f = master%grid%cell_faces(k)
-            if (any(x_slave < master%grid%lower(:, f)) .or. any(x_slave > master%grid%upper(:, f))) cycle
-            x_face = master%x_faces(:, :, f)
-            if (pass%smooth) then
-               call smooth_candidate(x_face, master%face_normals(:, :, f), x_slave, edge_tolerance, &
-                                     distance, gap, inside)
-               if (inside .and. gap <= pass%band) call keep_nearer(f, distance, current, best_inside, best_inside_face)
-            end if
-            call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
-            closest = face_position(x_face, xi)
-            distance = norm2(x_slave - closest)
-            gap = dot_product(x_slave - closest, face_normal(x_face, xi))
-            if (gap > pass%band) cycle
-            ! beyond the master surface's boundary by more than the extension zone: not this
-            ! face's (another face may still hold the node; a tie decides at its boundary by its
-            ! own coverage rule, frix_tie_pass)
-            if (.not. pass%tied) then
-               if (beyond_free_edge(x_face, pass%free_edge(:, f), x_slave, xi, fixed)) cycle
-            end if
-            call keep_nearer(f, distance, current, best, best_face)
-         end do
-      end if
+      if (c == 0) return
+      allocate (candidates(master%grid%cell_start(c + 1) - master%grid%cell_start(c)))
+      n_candidates = 0
+      do k = master%grid%cell_start(c) + 1, master%grid%cell_start(c + 1)
+         f = master%grid%cell_faces(k)
+         if (any(x_slave < master%grid%lower(:, f)) .or. any(x_slave > master%grid%upper(:, f))) cycle
+         x_face = master%x_faces(:, :, f)
+         call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
+         closest = face_position(x_face, xi)
+         distance = norm2(x_slave - closest)
+         n_candidates = n_candidates + 1
+         candidates(n_candidates) = candidate_t(f, distance, n_candidates)
+         gap = dot_product(x_slave - closest, face_normal(x_face, xi))
+         if (gap > pass%band) cycle
+         ! beyond the master surface's boundary by more than the extension zone: not this
+         ! face's (another face may still hold the node; a tie decides at its boundary by its
+         ! own coverage rule, frix_tie_pass)
+         if (.not. pass%tied) then
+            if (beyond_free_edge(x_face, pass%free_edge(:, f), x_slave, xi, fixed)) cycle
+         end if
+         call keep_nearer(f, distance, current, best, best_face)
+      end do
+      face = best_face
       ! smoothed normals: the nearest face whose normal projection lies inside it, else
       ! (beyond a free edge of the master surface, or no projection) the nearest face
-      face = merge(best_inside_face, best_face, best_inside_face > 0)
+      if (pass%smooth) then
+         f = nearest_inside_face(coords, u, pass, master, x_slave, current, edge_tolerance, &
+                                 candidates(:n_candidates))
+         if (f > 0) face = f
+      end if
    end function nearest_face
+
+   !> The nearest of the candidate faces whose normal projection along the smoothed normals
+   !> lies inside it with a gap within the band (0: none), chosen as keep_nearer chooses in the
+   !> grid's order. Candidates are projected in the order of their facet distances d_f, and
+   !> none is projected once d_f exceeds the nearest distance found by more than the tie
+   !> tolerance and the edge tolerance's reach: a projection inside the face within
+   !> edge_tolerance lies at least d_f - 2 t (1 + t) D from x_slave (t the edge tolerance, D
+   !> the largest distance between the face's nodes, which bounds |x_,k| on the extrapolated
+   !> face), so that face can neither be nearer nor tie.
+   integer function nearest_inside_face(coords, u, pass, master, x_slave, current, edge_tolerance, candidates) &
+      result(best_face)
+      real(dp), intent(in) :: coords(:, :), u(:)
+      type(contact_pass_t), intent(in) :: pass
+      type(master_state_t), intent(inout) :: master
+      real(dp), intent(in) :: x_slave(3)
+      integer, intent(in) :: current
+      real(dp), intent(in) :: edge_tolerance
+      type(candidate_t), intent(inout) :: candidates(:)
+      type(candidate_t) :: by_distance(size(candidates))
+      real(dp) :: best, distance, gap, reach
+      integer :: k, f
+      logical :: inside
+      by_distance = candidates
+      call sort_by_distance(by_distance)
+      best = 0.5_dp*huge(1.0_dp)
+      do k = 1, size(by_distance)
+         f = by_distance(k)%face
+         reach = 2.0_dp*edge_tolerance*(1.0_dp + edge_tolerance)*node_spread(master%x_faces(:, :, f))
+         if (by_distance(k)%distance - reach > best*(1.0_dp + tie_tolerance)) exit
+         if (.not. master%has_normals(f)) then
+            master%face_normals(:, :, f) = face_nodal_normals(coords, u, pass, f)
+            master%has_normals(f) = .true.
+         end if
+         call smooth_candidate(master%x_faces(:, :, f), master%face_normals(:, :, f), x_slave, edge_tolerance, &
+                               distance, gap, inside)
+         if (.not. (inside .and. gap <= pass%band)) cycle
+         candidates(by_distance(k)%position)%qualifies = .true.
+         candidates(by_distance(k)%position)%smooth_distance = distance
+         best = min(best, distance)
+      end do
+      best = 0.5_dp*huge(1.0_dp)
+      best_face = 0
+      do k = 1, size(candidates)
+         if (candidates(k)%qualifies) &
+            call keep_nearer(candidates(k)%face, candidates(k)%smooth_distance, current, best, best_face)
+      end do
+   end function nearest_inside_face
+
+   !> Sort candidates by increasing facet distance, the order of the grid kept among equal
+   !> distances (insertion sort: a handful of candidates).
+   pure subroutine sort_by_distance(candidates)
+      type(candidate_t), intent(inout) :: candidates(:)
+      type(candidate_t) :: moving
+      integer :: k, j
+      do k = 2, size(candidates)
+         moving = candidates(k)
+         j = k - 1
+         do while (j >= 1)
+            if (candidates(j)%distance <= moving%distance) exit
+            candidates(j + 1) = candidates(j)
+            j = j - 1
+         end do
+         candidates(j + 1) = moving
+      end do
+   end subroutine sort_by_distance
+
+   !> The largest distance between two nodes of a face.
+   pure real(dp) function node_spread(x_face)
+      real(dp), intent(in) :: x_face(3, 4)
+      integer :: a, b
+      node_spread = 0.0_dp
+      do a = 1, 3
+         do b = a + 1, 4
+            node_spread = max(node_spread, norm2(x_face(:, a) - x_face(:, b)))
+         end do
+      end do
+   end function node_spread
 
    !> Whether the closest point of x_slave on the bounded face x_face (parent coordinates xi,
    !> `fixed` the clamped ones: closest_point_in_face's) is clamped onto one of the face's free
