@@ -30,11 +30,13 @@
 !>   Yang, Laursen & Meng, IJNME 62 (2005), and Wriggers 2006, 9.5, for the smoothing idea).
 !>   The contact point xi* is the normal projection along that field, x_s - x(xi*) parallel
 !>   to n(xi*): r_k = d . a_k - (d . n)(n . a_k) = 0 (d = x_s - x(xi), k = 1, 2), solved by
-!>   Newton with the Jacobian of the duals in xi; g = d . n(xi*). Where that point lies outside
+!>   Newton in plain reals (frix_smoothed_normals); g = d . n(xi*). Where that point lies outside
 !>   the face (or is not found) and `clamp` is set, the facet's clamped closest point (which
 !>   may lie inside the face) is the contact point, with the smoothed normal there; its
-!>   derivative is the facet one. The nodes around the face then
-!>   enter the linearization (up to max_ring_nodes more unknowns), and the tangent is
+!>   derivative is the facet one. The 4 nodal normals are dual unknowns (after those of the
+!>   nodes); their derivatives are chained with the nodal normals' closed-form derivatives
+!>   (chain_nodal_normals), so the nodes around the face enter the tangent (up to
+!>   max_ring_nodes more columns) without being dual unknowns, and the tangent is
 !>   unsymmetric also without friction. On a flat surface n(xi) is the facet normal and
 !>   everything equals the facet formulation.
 !> Forces: on the slave f = A_s (p_N n + t); on master node a: -N_a(xi*) f. The kernel returns
