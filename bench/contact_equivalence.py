@@ -5,7 +5,8 @@
 
 For every deck: both runs' exit status, Newton iterations, assemblies and assembly times
 (`frix: stat`), and for every CSV file both runs wrote (history, contact) the largest
-difference of a column relative to that column's largest magnitude in the old run. Used to
+difference of a column relative to the largest magnitude of its quantity in the old run
+(the components of a vector share one scale). Used to
 check that a change of the contact kernel's implementation leaves the answers as they were
 (docs/performance.md, "Contact kernel"). Error decks (`tests/errors`) are skipped. Exit 1
 if a deck's exit status or iteration count differs.
@@ -50,16 +51,29 @@ def read_columns(path):
     return columns
 
 
+def quantity(name):
+    """The quantity a column holds: its name up to the first digit or '_' (the components of
+    one vector, traction_x/y/z, u1_n6/u3_n8, share it)."""
+    return re.match(r'[A-Za-z]*', name).group(0)
+
+
 def csv_difference(old_path, new_path):
-    """Largest relative column difference and the column, or a reason they cannot be compared."""
+    """Largest column difference relative to the largest magnitude of the column's quantity in
+    the old run (so that a component that is zero to round-off, such as normal_y on a symmetry
+    plane, is measured against its vector), and the column; or a reason they cannot be
+    compared."""
     old, new = read_columns(old_path), read_columns(new_path)
     if old.keys() != new.keys():
         return math.inf, 'columns differ'
+    scales = {}
+    for name, values in old.items():
+        key = quantity(name)
+        scales[key] = max(scales.get(key, 0.0), max((abs(v) for v in values), default=0.0))
     worst, where = 0.0, ''
     for name, values in old.items():
         if len(values) != len(new[name]):
             return math.inf, 'rows differ'
-        scale = max((abs(v) for v in values), default=0.0) or 1.0
+        scale = scales[quantity(name)] or 1.0
         diff = max((abs(a - b) for a, b in zip(values, new[name])), default=0.0) / scale
         if diff > worst:
             worst, where = diff, name
