@@ -1,13 +1,14 @@
-!> Sparse Cholesky (CHOLMOD, SuiteSparse 5.12, supernodal LL') for symmetric positive definite
-!> systems. Only the upper triangle of the full CSC storage is read (stype = 1). The
+!> Sparse Cholesky (CHOLMOD, SuiteSparse 5.12, supernodal LL', its 64-bit interface
+!> `cholmod_l_*`) for symmetric positive definite systems. Only the upper triangle of the full
+!> CSC storage is read (stype = 1). The
 !> fill-reducing ordering is METIS nested dissection of the node graph
 !> (frix_metis_ordering), handed to CHOLMOD as a user permutation. cholmod_common lives in
 !> the C glue cholmod_shim.c behind an opaque handle.
 !>
 !> Do not copy a cholmod_solver_t (assignment would share the handle); pass it around.
 module frix_cholmod_solver
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_null_ptr, c_associated
-   use frix_kinds, only: dp, i4, i8
+   use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_null_ptr, c_associated
+   use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
@@ -22,9 +23,9 @@ module frix_cholmod_solver
 
    !> Common->status values of cholmod_core.h (SuiteSparse 5.12)
    integer(c_int), parameter :: cholmod_not_posdef = 1, cholmod_out_of_memory = -2, cholmod_too_large = -3
-   !> the int interface (cholmod_*, not cholmod_l_*) indexes the factor with a C int
-   character(len=*), parameter :: cholmod_limit = 'CHOLMOD''s 32-bit interface indexes at most 2^31 - 1 '// &
-                                                  'entries of its supernodal factor'
+   !> CHOLMOD_TOO_LARGE from the 64-bit interface: a size overflowed its integers (size_t,
+   !> SuiteSparse_long), which no factor that fits in memory reaches
+   character(len=*), parameter :: cholmod_limit = 'the size of the factor overflows CHOLMOD''s 64-bit integers'
 
    !> CHOLMOD behind linear_solver_t.
    type, extends(linear_solver_t) :: cholmod_solver_t
@@ -50,10 +51,10 @@ module frix_cholmod_solver
 
       function frix_cholmod_analyse(handle, n, col_ptr, row_index, values, permutation, lnz) &
          bind(C, name='frix_cholmod_analyse') result(status)
-         import :: c_ptr, c_int, c_double
+         import :: c_ptr, c_int, c_int64_t, c_double
          type(c_ptr), value :: handle
-         integer(c_int), value :: n
-         integer(c_int), intent(in) :: col_ptr(*), row_index(*), permutation(*)
+         integer(c_int64_t), value :: n
+         integer(c_int64_t), intent(in) :: col_ptr(*), row_index(*), permutation(*)
          real(c_double), intent(in) :: values(*)
          real(c_double), intent(out) :: lnz
          integer(c_int) :: status
@@ -61,20 +62,20 @@ module frix_cholmod_solver
 
       function frix_cholmod_factorize(handle, n, col_ptr, row_index, values, failed, min_pivot, max_pivot) &
          bind(C, name='frix_cholmod_factorize') result(status)
-         import :: c_ptr, c_int, c_double
+         import :: c_ptr, c_int, c_int64_t, c_double
          type(c_ptr), value :: handle
-         integer(c_int), value :: n
-         integer(c_int), intent(in) :: col_ptr(*), row_index(*)
+         integer(c_int64_t), value :: n
+         integer(c_int64_t), intent(in) :: col_ptr(*), row_index(*)
          real(c_double), intent(in) :: values(*)
-         integer(c_int), intent(out) :: failed
+         integer(c_int64_t), intent(out) :: failed
          real(c_double), intent(out) :: min_pivot, max_pivot
          integer(c_int) :: status
       end function frix_cholmod_factorize
 
       function frix_cholmod_solve(handle, n, rhs, x) bind(C, name='frix_cholmod_solve') result(status)
-         import :: c_ptr, c_int, c_double
+         import :: c_ptr, c_int, c_int64_t, c_double
          type(c_ptr), value :: handle
-         integer(c_int), value :: n
+         integer(c_int64_t), value :: n
          real(c_double), intent(in) :: rhs(*)
          real(c_double), intent(out) :: x(*)
          integer(c_int) :: status
@@ -102,8 +103,9 @@ contains
       class(cholmod_solver_t), intent(inout) :: solver
       type(sparse_matrix_t), intent(in), target :: matrix
       type(error_t), allocatable, intent(out) :: error
-      integer(i4), allocatable :: permutation(:)
-      integer(c_int) :: status, failed
+      integer(i8), allocatable :: permutation(:)
+      integer(c_int) :: status
+      integer(c_int64_t) :: failed
       real(c_double) :: lnz, min_pivot, max_pivot, peak, in_use
       real(dp) :: start
 
@@ -120,7 +122,7 @@ contains
          solver%analysed_pattern_id = 0
          call metis_dof_permutation(matrix, permutation, error)
          if (allocated(error)) return
-         status = frix_cholmod_analyse(solver%handle, int(matrix%n, c_int), matrix%col_ptr, matrix%row_index, &
+         status = frix_cholmod_analyse(solver%handle, int(matrix%n, c_int64_t), matrix%col_ptr, matrix%row_index, &
                                        matrix%values, permutation, lnz)
          call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status < 0) then
@@ -133,7 +135,7 @@ contains
       end if
 
       start = wall_clock_seconds()
-      status = frix_cholmod_factorize(solver%handle, int(matrix%n, c_int), matrix%col_ptr, matrix%row_index, &
+      status = frix_cholmod_factorize(solver%handle, int(matrix%n, c_int64_t), matrix%col_ptr, matrix%row_index, &
                                       matrix%values, failed, min_pivot, max_pivot)
       call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       call frix_cholmod_memory(solver%handle, peak, in_use)
@@ -199,7 +201,7 @@ contains
       call check_solve_sizes(solver, matrix, size(rhs), size(x), error)
       if (allocated(error)) return
       start = wall_clock_seconds()
-      status = frix_cholmod_solve(solver%handle, int(matrix%n, c_int), rhs, x)
+      status = frix_cholmod_solve(solver%handle, int(matrix%n, c_int64_t), rhs, x)
       call add_elapsed_seconds(start, solver%last_solve_seconds, solver%solve_seconds, solver%n_solves)
       if (status < 0) call fatal_error(error, 'CHOLMOD: solve failed, status '//to_string(int(status)))
    end subroutine solve

@@ -5,10 +5,11 @@
 !> Convention (METIS 5 manual, section "METIS_NodeND"): with A' the permuted matrix, row i
 !> of A' is row perm[i] of A, i.e. perm[k] = i means original row i is eliminated k-th.
 !> This is exactly CHOLMOD's UserPerm convention ("Perm[k] = i means row i of A is the k-th
-!> row of PAP'"), so `perm` (not `iperm`) is handed to CHOLMOD.
+!> row of PAP'"), so `perm` (not `iperm`) is handed to CHOLMOD, as SuiteSparse_long for its
+!> 64-bit interface (`cholmod_l_analyze_p`).
 module frix_metis_ordering
    use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_ptr, c_null_ptr
-   use frix_kinds, only: i4
+   use frix_kinds, only: i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
@@ -48,7 +49,7 @@ contains
    !> in position m gives DOFs 3*m, 3*m+1, 3*m+2 -> equations 3*(node-1) + 0, 1, 2.
    subroutine metis_dof_permutation(matrix, permutation, error)
       type(sparse_matrix_t), intent(in) :: matrix
-      integer(i4), allocatable, intent(out) :: permutation(:)
+      integer(i8), allocatable, intent(out) :: permutation(:)
       type(error_t), allocatable, intent(out) :: error
       integer(c_int32_t), allocatable :: xadj(:), adjncy(:), node_perm(:), node_iperm(:)
       integer(c_int32_t) :: options(metis_noptions), n_vertices
@@ -89,7 +90,7 @@ contains
       end if
       do position = 1, matrix%n_nodes
          do q = 1, 3
-            permutation(3*(position - 1) + q) = int(3*node_perm(position) + q - 1, i4)
+            permutation(3*(position - 1) + q) = 3_i8*node_perm(position) + q - 1
          end do
       end do
    end subroutine metis_dof_permutation

@@ -2,8 +2,11 @@
 !> triangles), with a node-blocked layout for cheap finite element scatter.
 !>
 !> Equation numbering is node-major with 3 DOFs per node: equation `3*(node-1) + i`,
-!> i = 1, 2, 3 the direction (x, y, z). Index arrays are 0-based `integer(i4)` so that
-!> SuiteSparse (CHOLMOD, UMFPACK `_di_`) reads them without copies.
+!> i = 1, 2, 3 the direction (x, y, z). The CSC index arrays `col_ptr` and `row_index` are
+!> 0-based `integer(i8)` (SuiteSparse_long) so that the 64-bit interfaces of SuiteSparse
+!> (`cholmod_l_*`, `umfpack_dl_*`) read them without copies. Positions in `values` are default
+!> integers: at most 2^31 - 1 entries, about 26 million equations of HEX8 (81 entries per
+!> equation), far beyond what a direct factorization of such a mesh fits in memory.
 !>
 !> Layout. The node graph is kept in CSR form (`node_ptr`, `node_adj`, 1-based, every
 !> node list sorted and containing the node itself). With deg(a) = node_ptr(a+1) - node_ptr(a),
@@ -31,8 +34,8 @@ module frix_sparse_matrix
    type :: sparse_matrix_t
       integer :: n = 0                          !! number of equations (3 * n_nodes)
       integer :: n_nodes = 0                    !! number of nodes of the node graph
-      integer(i4), allocatable :: col_ptr(:)    !! (0:n) 0-based offsets of the columns
-      integer(i4), allocatable :: row_index(:)  !! (nnz) 0-based rows, sorted within a column
+      integer(i8), allocatable :: col_ptr(:)    !! (0:n) 0-based offsets of the columns
+      integer(i8), allocatable :: row_index(:)  !! (nnz) 0-based rows, sorted within a column
       real(dp), allocatable :: values(:)        !! (nnz) entries, same order as row_index
       integer(i4), allocatable :: node_ptr(:)   !! (n_nodes+1) 1-based CSR offsets of the node graph
       integer(i4), allocatable :: node_adj(:)   !! 1-based sorted neighbour lists (node itself included)
@@ -73,7 +76,8 @@ contains
       integer :: n_per_element, n_elements, n_pairs, e, l, a, b, m, pass, count, q, r
       integer :: degree, first, kk
       integer(i8) :: total, node_entries
-      integer(i4) :: tmp, base
+      integer(i4) :: tmp
+      integer(i8) :: base
 
       ! keep values/row_index: reused when the new pattern has the same entry count (a
       ! rebuild after a contact change often does), which saves touching fresh pages
@@ -190,7 +194,7 @@ contains
          if (pass == 1) then
             if (9_i8*total > int(huge(0_i4), i8)) then
                call report('create_node_block_pattern: '//to_string(9_i8*total)// &
-                           ' matrix entries exceed the 32-bit index range of SuiteSparse _di_')
+                           ' matrix entries exceed 2^31 - 1, the range of the positions of its values')
                return
             end if
             ! degrees -> offsets
@@ -222,15 +226,15 @@ contains
       matrix%col_ptr(0) = 0
       do a = 1, n_nodes
          degree = matrix%node_ptr(a + 1) - matrix%node_ptr(a)
-         base = 9_i4*(matrix%node_ptr(a) - 1_i4)
+         base = 9_i8*(matrix%node_ptr(a) - 1_i8)
          do l = 1, 3
-            matrix%col_ptr(3*(a - 1) + l) = base + int(3*degree*l, i4)
+            matrix%col_ptr(3*(a - 1) + l) = base + 3_i8*degree*l
             do kk = 1, degree
                b = matrix%node_adj(matrix%node_ptr(a) + kk - 1)
-               q = base + 3*degree*(l - 1) + 3*(kk - 1)
-               matrix%row_index(q + 1) = int(3*(b - 1), i4)
-               matrix%row_index(q + 2) = int(3*(b - 1) + 1, i4)
-               matrix%row_index(q + 3) = int(3*(b - 1) + 2, i4)
+               q = int(base) + 3*degree*(l - 1) + 3*(kk - 1)
+               matrix%row_index(q + 1) = 3_i8*(b - 1)
+               matrix%row_index(q + 2) = 3_i8*(b - 1) + 1
+               matrix%row_index(q + 3) = 3_i8*(b - 1) + 2
             end do
          end do
       end do
@@ -374,7 +378,7 @@ contains
       y = 0.0_dp
       do column = 1, matrix%n
          x_column = x(column)
-         do p = matrix%col_ptr(column - 1) + 1, matrix%col_ptr(column)
+         do p = int(matrix%col_ptr(column - 1)) + 1, int(matrix%col_ptr(column))
             y(matrix%row_index(p) + 1) = y(matrix%row_index(p) + 1) + matrix%values(p)*x_column
          end do
       end do
@@ -389,7 +393,7 @@ contains
       real(dp) :: total
       do column = 1, matrix%n
          total = 0.0_dp
-         do p = matrix%col_ptr(column - 1) + 1, matrix%col_ptr(column)
+         do p = int(matrix%col_ptr(column - 1)) + 1, int(matrix%col_ptr(column))
             total = total + matrix%values(p)*x(matrix%row_index(p) + 1)
          end do
          y(column) = total
@@ -407,7 +411,7 @@ contains
       integer :: column, p, row
       do column = 1, matrix%n
          if (fixed(column)) then
-            do p = matrix%col_ptr(column - 1) + 1, matrix%col_ptr(column)
+            do p = int(matrix%col_ptr(column - 1)) + 1, int(matrix%col_ptr(column))
                if (matrix%row_index(p) + 1 == column) then
                   matrix%values(p) = diagonal_value
                else
@@ -415,8 +419,8 @@ contains
                end if
             end do
          else
-            do p = matrix%col_ptr(column - 1) + 1, matrix%col_ptr(column)
-               row = matrix%row_index(p) + 1
+            do p = int(matrix%col_ptr(column - 1)) + 1, int(matrix%col_ptr(column))
+               row = int(matrix%row_index(p)) + 1
                if (fixed(row)) matrix%values(p) = 0.0_dp
             end do
          end if
@@ -502,8 +506,8 @@ contains
       integer(i8) :: bytes
       bytes = 0
       if (allocated(matrix%values)) bytes = bytes + 8_i8*size(matrix%values, kind=i8)
-      if (allocated(matrix%row_index)) bytes = bytes + 4_i8*size(matrix%row_index, kind=i8)
-      if (allocated(matrix%col_ptr)) bytes = bytes + 4_i8*size(matrix%col_ptr, kind=i8)
+      if (allocated(matrix%row_index)) bytes = bytes + 8_i8*size(matrix%row_index, kind=i8)
+      if (allocated(matrix%col_ptr)) bytes = bytes + 8_i8*size(matrix%col_ptr, kind=i8)
       if (allocated(matrix%node_ptr)) bytes = bytes + 4_i8*size(matrix%node_ptr, kind=i8)
       if (allocated(matrix%node_adj)) bytes = bytes + 4_i8*size(matrix%node_adj, kind=i8)
    end function memory_bytes

@@ -1,13 +1,14 @@
-!> Sparse LU (UMFPACK `umfpack_di_*`, SuiteSparse 5.12) for unsymmetric systems, bound
-!> directly through iso_c_binding: CSC is UMFPACK's native format (Ap = col_ptr,
-!> Ai = row_index, Ax = values, 0-based int32). Ordering: METIS (UMFPACK_ORDERING_METIS);
-!> the Symbolic object is reused while the matrix pattern_id is unchanged.
+!> Sparse LU (UMFPACK's 64-bit interface `umfpack_dl_*`, SuiteSparse 5.12) for unsymmetric
+!> systems, bound directly through iso_c_binding: CSC is UMFPACK's native format (Ap = col_ptr,
+!> Ai = row_index, Ax = values, 0-based SuiteSparse_long = int64). Ordering: METIS
+!> (UMFPACK_ORDERING_METIS); the Symbolic object is reused while the matrix pattern_id is
+!> unchanged.
 !>
 !> Control/Info indices below are the C constants of umfpack.h; the Fortran arrays are
 !> 1-based, so C index k is element k+1.
 !> Do not copy an umfpack_solver_t (assignment would share the Symbolic/Numeric objects).
 module frix_umfpack_solver
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_null_ptr, c_associated, c_loc
+   use, intrinsic :: iso_c_binding, only: c_int64_t, c_double, c_ptr, c_null_ptr, c_associated, c_loc
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
@@ -29,10 +30,10 @@ module frix_umfpack_solver
    integer, parameter :: umfpack_lnz = 43                      !! Info index UMFPACK_LNZ
    integer, parameter :: umfpack_unz = 44                      !! Info index UMFPACK_UNZ
    integer, parameter :: umfpack_rcond = 67                    !! Info index UMFPACK_RCOND (min/max |u_kk|)
-   integer(c_int), parameter :: umfpack_ok = 0                 !! UMFPACK_OK
-   integer(c_int), parameter :: umfpack_warning_singular_matrix = 1  !! UMFPACK_WARNING_singular_matrix
-   integer(c_int), parameter :: umfpack_error_out_of_memory = -1     !! UMFPACK_ERROR_out_of_memory
-   integer(c_int), parameter :: umfpack_system_a = 0           !! UMFPACK_A: solve A x = b
+   integer(c_int64_t), parameter :: umfpack_ok = 0             !! UMFPACK_OK
+   integer(c_int64_t), parameter :: umfpack_warning_singular_matrix = 1  !! UMFPACK_WARNING_singular_matrix
+   integer(c_int64_t), parameter :: umfpack_error_out_of_memory = -1     !! UMFPACK_ERROR_out_of_memory
+   integer(c_int64_t), parameter :: umfpack_system_a = 0       !! UMFPACK_A: solve A x = b
 
    !> UMFPACK behind linear_solver_t.
    type, extends(linear_solver_t) :: umfpack_solver_t
@@ -49,67 +50,67 @@ module frix_umfpack_solver
    end type umfpack_solver_t
 
    interface
-      subroutine umfpack_di_defaults(control) bind(C, name='umfpack_di_defaults')
+      subroutine umfpack_dl_defaults(control) bind(C, name='umfpack_dl_defaults')
          import :: c_double
          real(c_double), intent(out) :: control(*)
-      end subroutine umfpack_di_defaults
+      end subroutine umfpack_dl_defaults
 
-      function umfpack_di_symbolic(n_row, n_col, ap, ai, ax, symbolic, control, info) &
-         bind(C, name='umfpack_di_symbolic') result(status)
-         import :: c_int, c_double, c_ptr
-         integer(c_int), value :: n_row, n_col
-         integer(c_int), intent(in) :: ap(*), ai(*)
+      function umfpack_dl_symbolic(n_row, n_col, ap, ai, ax, symbolic, control, info) &
+         bind(C, name='umfpack_dl_symbolic') result(status)
+         import :: c_int64_t, c_double, c_ptr
+         integer(c_int64_t), value :: n_row, n_col
+         integer(c_int64_t), intent(in) :: ap(*), ai(*)
          real(c_double), intent(in) :: ax(*)
          type(c_ptr), intent(out) :: symbolic
          real(c_double), intent(in) :: control(*)
          real(c_double), intent(out) :: info(*)
-         integer(c_int) :: status
-      end function umfpack_di_symbolic
+         integer(c_int64_t) :: status
+      end function umfpack_dl_symbolic
 
-      function umfpack_di_numeric(ap, ai, ax, symbolic, numeric, control, info) &
-         bind(C, name='umfpack_di_numeric') result(status)
-         import :: c_int, c_double, c_ptr
-         integer(c_int), intent(in) :: ap(*), ai(*)
+      function umfpack_dl_numeric(ap, ai, ax, symbolic, numeric, control, info) &
+         bind(C, name='umfpack_dl_numeric') result(status)
+         import :: c_int64_t, c_double, c_ptr
+         integer(c_int64_t), intent(in) :: ap(*), ai(*)
          real(c_double), intent(in) :: ax(*)
          type(c_ptr), value :: symbolic
          type(c_ptr), intent(out) :: numeric
          real(c_double), intent(in) :: control(*)
          real(c_double), intent(out) :: info(*)
-         integer(c_int) :: status
-      end function umfpack_di_numeric
+         integer(c_int64_t) :: status
+      end function umfpack_dl_numeric
 
-      function umfpack_di_solve(system, ap, ai, ax, x, b, numeric, control, info) &
-         bind(C, name='umfpack_di_solve') result(status)
-         import :: c_int, c_double, c_ptr
-         integer(c_int), value :: system
-         integer(c_int), intent(in) :: ap(*), ai(*)
+      function umfpack_dl_solve(system, ap, ai, ax, x, b, numeric, control, info) &
+         bind(C, name='umfpack_dl_solve') result(status)
+         import :: c_int64_t, c_double, c_ptr
+         integer(c_int64_t), value :: system
+         integer(c_int64_t), intent(in) :: ap(*), ai(*)
          real(c_double), intent(in) :: ax(*)
          real(c_double), intent(out) :: x(*)
          real(c_double), intent(in) :: b(*)
          type(c_ptr), value :: numeric
          real(c_double), intent(in) :: control(*)
          real(c_double), intent(out) :: info(*)
-         integer(c_int) :: status
-      end function umfpack_di_solve
+         integer(c_int64_t) :: status
+      end function umfpack_dl_solve
 
-      subroutine umfpack_di_free_symbolic(symbolic) bind(C, name='umfpack_di_free_symbolic')
+      subroutine umfpack_dl_free_symbolic(symbolic) bind(C, name='umfpack_dl_free_symbolic')
          import :: c_ptr
          type(c_ptr), intent(inout) :: symbolic
-      end subroutine umfpack_di_free_symbolic
+      end subroutine umfpack_dl_free_symbolic
 
-      subroutine umfpack_di_free_numeric(numeric) bind(C, name='umfpack_di_free_numeric')
+      subroutine umfpack_dl_free_numeric(numeric) bind(C, name='umfpack_dl_free_numeric')
          import :: c_ptr
          type(c_ptr), intent(inout) :: numeric
-      end subroutine umfpack_di_free_numeric
+      end subroutine umfpack_dl_free_numeric
 
       !> Every array argument may be NULL (not returned); used here for Q and diag(U) only.
-      function umfpack_di_get_numeric(lp, lj, lx, up, ui, ux, p, q, dx, do_recip, rs, numeric) &
-         bind(C, name='umfpack_di_get_numeric') result(status)
-         import :: c_int, c_ptr
+      function umfpack_dl_get_numeric(lp, lj, lx, up, ui, ux, p, q, dx, do_recip, rs, numeric) &
+         bind(C, name='umfpack_dl_get_numeric') result(status)
+         import :: c_int64_t, c_ptr
          type(c_ptr), value :: lp, lj, lx, up, ui, ux, p, q, dx, do_recip, rs
          type(c_ptr), value :: numeric
-         integer(c_int) :: status
-      end function umfpack_di_get_numeric
+         integer(c_int64_t) :: status
+      end function umfpack_dl_get_numeric
    end interface
 
 contains
@@ -120,27 +121,27 @@ contains
       keyword = 'UMFPACK'
    end function name
 
-   !> umfpack_di_symbolic when the pattern changed, then umfpack_di_numeric. A singular
+   !> umfpack_dl_symbolic when the pattern changed, then umfpack_dl_numeric. A singular
    !> matrix (UMFPACK_WARNING_singular_matrix, or min/max |u_kk| below singular_pivot_ratio)
    !> gives an error naming the original column of the smallest pivot.
    subroutine factorize(solver, matrix, error)
       class(umfpack_solver_t), intent(inout) :: solver
       type(sparse_matrix_t), intent(in), target :: matrix
       type(error_t), allocatable, intent(out) :: error
-      integer(c_int) :: status
+      integer(c_int64_t) :: status
       real(dp) :: start
 
       call begin_factorize(solver, matrix, error)
       if (allocated(error)) return
-      if (c_associated(solver%numeric)) call umfpack_di_free_numeric(solver%numeric)
+      if (c_associated(solver%numeric)) call umfpack_dl_free_numeric(solver%numeric)
 
       if (matrix%pattern_id /= solver%analysed_pattern_id) then
-         if (c_associated(solver%symbolic)) call umfpack_di_free_symbolic(solver%symbolic)
+         if (c_associated(solver%symbolic)) call umfpack_dl_free_symbolic(solver%symbolic)
          solver%analysed_pattern_id = 0
-         call umfpack_di_defaults(solver%control)
+         call umfpack_dl_defaults(solver%control)
          solver%control(umfpack_ordering + 1) = umfpack_ordering_metis
          start = wall_clock_seconds()
-         status = umfpack_di_symbolic(int(matrix%n, c_int), int(matrix%n, c_int), matrix%col_ptr, &
+         status = umfpack_dl_symbolic(int(matrix%n, c_int64_t), int(matrix%n, c_int64_t), matrix%col_ptr, &
                                       matrix%row_index, matrix%values, solver%symbolic, solver%control, solver%info)
          call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status /= umfpack_ok) then
@@ -152,7 +153,7 @@ contains
       end if
 
       start = wall_clock_seconds()
-      status = umfpack_di_numeric(matrix%col_ptr, matrix%row_index, matrix%values, solver%symbolic, &
+      status = umfpack_dl_numeric(matrix%col_ptr, matrix%row_index, matrix%values, solver%symbolic, &
                                   solver%numeric, solver%control, solver%info)
       call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       solver%peak_memory_bytes = int(solver%info(umfpack_peak_memory + 1)*solver%info(umfpack_size_of_unit + 1), i8)
@@ -179,11 +180,11 @@ contains
    end subroutine factorize
 
    !> The error and failure kind of a failed UMFPACK status in `stage` for n equations: out of
-   !> memory (UMFPACK_ERROR_out_of_memory, which is also its answer to a factor beyond its
-   !> integer range), or any other status.
+   !> memory (UMFPACK_ERROR_out_of_memory; with 64-bit indices no factor that fits in memory
+   !> overflows them), or any other status.
    subroutine umfpack_failure(error, status, stage, n, failure)
       type(error_t), allocatable, intent(out) :: error
-      integer(c_int), intent(in) :: status
+      integer(c_int64_t), intent(in) :: status
       character(len=*), intent(in) :: stage
       integer, intent(in) :: n
       integer, intent(out) :: failure
@@ -202,15 +203,15 @@ contains
       class(umfpack_solver_t), intent(in) :: solver
       integer, intent(in) :: n
       integer :: column
-      integer(c_int), allocatable, target :: q(:)
+      integer(c_int64_t), allocatable, target :: q(:)
       real(c_double), allocatable, target :: diagonal(:)
-      integer(c_int) :: status
+      integer(c_int64_t) :: status
       allocate (q(n), diagonal(n))
       column = 0
-      status = umfpack_di_get_numeric(c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, &
+      status = umfpack_dl_get_numeric(c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, &
                                       c_null_ptr, c_loc(q), c_loc(diagonal), c_null_ptr, c_null_ptr, solver%numeric)
       if (status /= umfpack_ok) return
-      column = q(minloc(abs(diagonal), dim=1)) + 1
+      column = int(q(minloc(abs(diagonal), dim=1))) + 1
    end function smallest_pivot_column
 
    subroutine solve(solver, matrix, rhs, x, error)
@@ -219,13 +220,13 @@ contains
       real(dp), intent(in), target :: rhs(:)
       real(dp), intent(out), target :: x(:)
       type(error_t), allocatable, intent(out) :: error
-      integer(c_int) :: status
+      integer(c_int64_t) :: status
       real(dp) :: start
 
       call check_solve_sizes(solver, matrix, size(rhs), size(x), error)
       if (allocated(error)) return
       start = wall_clock_seconds()
-      status = umfpack_di_solve(umfpack_system_a, matrix%col_ptr, matrix%row_index, matrix%values, x, rhs, &
+      status = umfpack_dl_solve(umfpack_system_a, matrix%col_ptr, matrix%row_index, matrix%values, x, rhs, &
                                 solver%numeric, solver%control, solver%info)
       call add_elapsed_seconds(start, solver%last_solve_seconds, solver%solve_seconds, solver%n_solves)
       if (status /= umfpack_ok) call fatal_error(error, 'UMFPACK: solve failed, status '//to_string(int(status)))
@@ -234,8 +235,8 @@ contains
    !> Free Numeric and Symbolic; the next factorize analyses again.
    subroutine release(solver)
       class(umfpack_solver_t), intent(inout) :: solver
-      if (c_associated(solver%numeric)) call umfpack_di_free_numeric(solver%numeric)
-      if (c_associated(solver%symbolic)) call umfpack_di_free_symbolic(solver%symbolic)
+      if (c_associated(solver%numeric)) call umfpack_dl_free_numeric(solver%numeric)
+      if (c_associated(solver%symbolic)) call umfpack_dl_free_symbolic(solver%symbolic)
       solver%numeric = c_null_ptr
       solver%symbolic = c_null_ptr
       solver%analysed_pattern_id = 0

@@ -2,7 +2,7 @@
 !> Every solve is checked by its residual ||A x - b|| / ||b|| computed with
 !> sparse_matrix_t%multiply (checked against a dense product in test_sparse_matrix).
 module test_direct_solvers
-   use frix_kinds, only: dp, i4, i8
+   use frix_kinds, only: dp, i8
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_testing, only: unittest_t, new_unittest, check, check_message_contains
@@ -10,6 +10,8 @@ module test_direct_solvers
    use frix_linear_solver, only: linear_solver_t
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_metis_ordering, only: metis_dof_permutation
+   use frix_cholmod_solver, only: cholmod_failure
+   use frix_linear_solver, only: solver_too_large, solver_out_of_memory
    use test_linalg_fixtures, only: cube_connectivity, fill_random, spd_block, unsymmetric_block, laplacian_block
    implicit none
    private
@@ -38,6 +40,7 @@ contains
               new_unittest('floating_point_singular_neumann', test_neumann_singular), &
               new_unittest('near_singular_pivot_ratio', test_pivot_ratio), &
               new_unittest('solve_without_factorize', test_solve_without_factorize), &
+              new_unittest('cholmod_size_failures', test_cholmod_size_failures), &
               new_unittest('registry', test_registry) &
               ]
    end subroutine collect_direct_solvers
@@ -181,7 +184,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(sparse_matrix_t) :: matrix
       integer, allocatable :: connectivity(:, :)
-      integer(i4), allocatable :: permutation(:)
+      integer(i8), allocatable :: permutation(:)
       logical, allocatable :: seen(:)
       integer :: n_nodes, m
       call cube_connectivity(5, 4, 3, connectivity, n_nodes)
@@ -197,7 +200,7 @@ contains
       call check(error, all(seen), 'every equation appears once')
       if (allocated(error)) return
       do m = 0, n_nodes - 1
-         call check(error, mod(permutation(3*m + 1), 3) == 0 .and. permutation(3*m + 2) == permutation(3*m + 1) + 1 &
+         call check(error, mod(permutation(3*m + 1), 3_i8) == 0 .and. permutation(3*m + 2) == permutation(3*m + 1) + 1 &
                     .and. permutation(3*m + 3) == permutation(3*m + 1) + 2, 'node blocks kept together')
          if (allocated(error)) return
       end do
@@ -390,6 +393,27 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_solve_without_factorize
+
+   !> CHOLMOD_TOO_LARGE (-3) and CHOLMOD_OUT_OF_MEMORY (-2) of the 64-bit interface: the
+   !> failure kinds, the system's and the factor's sizes, and the 64-bit limit in the message.
+   subroutine test_cholmod_size_failures(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: failure_error
+      integer :: failure
+      call cholmod_failure(failure_error, -3, 'symbolic analysis', 902289, 1.913e9_dp, failure)
+      call check(error, failure == solver_too_large, 'status -3: too large')
+      if (allocated(error)) return
+      call check_message_contains(error, failure_error, &
+                                  'CHOLMOD: the problem is too large for the solver in its symbolic analysis '// &
+                                  '(902289 equations, a factor of about 1.913E+09 nonzeros; the size of the '// &
+                                  'factor overflows CHOLMOD''s 64-bit integers)')
+      if (allocated(error)) return
+      call cholmod_failure(failure_error, -2, 'numeric factorization', 1000, 0.0_dp, failure)
+      call check(error, failure == solver_out_of_memory, 'status -2: out of memory')
+      if (allocated(error)) return
+      call check_message_contains(error, failure_error, &
+                                  'CHOLMOD: out of memory in the numeric factorization (1000 equations)')
+   end subroutine test_cholmod_size_failures
 
    subroutine test_registry(error)
       type(error_t), allocatable, intent(out) :: error

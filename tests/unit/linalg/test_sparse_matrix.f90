@@ -94,7 +94,7 @@ contains
          end do
       end do
       do column = 1, matrix%n
-         do p = matrix%col_ptr(column - 1) + 2, matrix%col_ptr(column)
+         do p = int(matrix%col_ptr(column - 1)) + 2, int(matrix%col_ptr(column))
             call check(error, matrix%row_index(p) > matrix%row_index(p - 1), 'rows sorted in every column')
             if (allocated(error)) return
          end do
@@ -317,7 +317,7 @@ contains
       if (allocated(error)) return
       call check(error, all(matrix%values == 0.0_dp), 'a rebuild reusing the storage zeroes the values')
       if (allocated(error)) return
-      call check(error, matrix%memory_bytes() == 8_i8*36 + 4_i8*36 + 4_i8*7 + 4_i8*3 + 4_i8*4, &
+      call check(error, matrix%memory_bytes() == 8_i8*36 + 8_i8*36 + 8_i8*7 + 4_i8*3 + 4_i8*4, &
                  'memory_bytes = values + row_index + col_ptr + node_ptr + node_adj')
    end subroutine test_pattern_id
 end module test_sparse_matrix
