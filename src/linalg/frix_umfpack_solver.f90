@@ -1,8 +1,9 @@
 !> Sparse LU (UMFPACK's 64-bit interface `umfpack_dl_*`, SuiteSparse 5.12) for unsymmetric
 !> systems, bound directly through iso_c_binding: CSC is UMFPACK's native format (Ap = col_ptr,
 !> Ai = row_index, Ax = values, 0-based SuiteSparse_long = int64). Ordering: METIS
-!> (UMFPACK_ORDERING_METIS); the Symbolic object is reused while the matrix pattern_id is
-!> unchanged.
+!> (UMFPACK_ORDERING_METIS) with UMFPACK's automatic strategy, which takes the symmetric one for
+!> the structurally symmetric node-block pattern; no iterative refinement. The Symbolic object
+!> is reused while the matrix pattern_id is unchanged.
 !>
 !> Control/Info indices below are the C constants of umfpack.h; the Fortran arrays are
 !> 1-based, so C index k is element k+1.
@@ -20,11 +21,19 @@ module frix_umfpack_solver
    private
 
    public :: umfpack_solver_t
+   public :: umfpack_strategy_auto, umfpack_strategy_unsymmetric, umfpack_strategy_symmetric
+   public :: umfpack_ordering_amd, umfpack_ordering_metis
 
    integer, parameter :: umfpack_control = 20                  !! UMFPACK_CONTROL
    integer, parameter :: umfpack_info = 90                     !! UMFPACK_INFO
+   integer, parameter :: umfpack_strategy = 5                  !! Control index UMFPACK_STRATEGY
+   integer, parameter :: umfpack_irstep = 7                    !! Control index UMFPACK_IRSTEP
    integer, parameter :: umfpack_ordering = 10                 !! Control index UMFPACK_ORDERING
-   real(c_double), parameter :: umfpack_ordering_metis = 3.0_c_double  !! UMFPACK_ORDERING_METIS
+   integer, parameter :: umfpack_strategy_auto = 0             !! UMFPACK_STRATEGY_AUTO
+   integer, parameter :: umfpack_strategy_unsymmetric = 1      !! UMFPACK_STRATEGY_UNSYMMETRIC
+   integer, parameter :: umfpack_strategy_symmetric = 3        !! UMFPACK_STRATEGY_SYMMETRIC
+   integer, parameter :: umfpack_ordering_amd = 1              !! UMFPACK_ORDERING_AMD (AMD or COLAMD)
+   integer, parameter :: umfpack_ordering_metis = 3            !! UMFPACK_ORDERING_METIS
    integer, parameter :: umfpack_size_of_unit = 3              !! Info index UMFPACK_SIZE_OF_UNIT
    integer, parameter :: umfpack_peak_memory = 41              !! Info index UMFPACK_PEAK_MEMORY (units)
    integer, parameter :: umfpack_lnz = 43                      !! Info index UMFPACK_LNZ
@@ -41,6 +50,13 @@ module frix_umfpack_solver
       type(c_ptr), private :: numeric = c_null_ptr
       real(c_double), private :: control(umfpack_control) = 0.0_c_double
       real(c_double) :: info(umfpack_info) = 0.0_c_double   !! UMFPACK Info of the last call
+      !> Control settings, read at the next symbolic analysis (docs/performance.md, "UMFPACK
+      !> on the unsymmetric path", for the measurements behind the defaults).
+      integer :: strategy = umfpack_strategy_auto   !! UMFPACK_STRATEGY: umfpack_strategy_*
+      integer :: ordering = umfpack_ordering_metis  !! UMFPACK_ORDERING: umfpack_ordering_*
+      !> UMFPACK_IRSTEP: iterative refinement steps per solve (UMFPACK's default 2); none, as the
+      !> Newton iteration corrects the same residual anyway
+      integer :: refinement_steps = 0
    contains
       procedure :: name
       procedure :: factorize
@@ -139,7 +155,9 @@ contains
          if (c_associated(solver%symbolic)) call umfpack_dl_free_symbolic(solver%symbolic)
          solver%analysed_pattern_id = 0
          call umfpack_dl_defaults(solver%control)
-         solver%control(umfpack_ordering + 1) = umfpack_ordering_metis
+         solver%control(umfpack_strategy + 1) = real(solver%strategy, c_double)
+         solver%control(umfpack_ordering + 1) = real(solver%ordering, c_double)
+         solver%control(umfpack_irstep + 1) = real(solver%refinement_steps, c_double)
          start = wall_clock_seconds()
          status = umfpack_dl_symbolic(int(matrix%n, c_int64_t), int(matrix%n, c_int64_t), matrix%col_ptr, &
                                       matrix%row_index, matrix%values, solver%symbolic, solver%control, solver%info)

@@ -11,6 +11,7 @@ module test_direct_solvers
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_metis_ordering, only: metis_dof_permutation
    use frix_cholmod_solver, only: cholmod_failure
+   use frix_umfpack_solver, only: umfpack_solver_t, umfpack_strategy_unsymmetric, umfpack_ordering_amd
    use frix_linear_solver, only: solver_too_large, solver_out_of_memory
    use test_linalg_fixtures, only: cube_connectivity, fill_random, spd_block, unsymmetric_block, laplacian_block
    implicit none
@@ -31,6 +32,7 @@ contains
       tests = [ &
               new_unittest('cholmod_spd_refactorize_reanalyse', test_cholmod_spd), &
               new_unittest('umfpack_unsymmetric_refactorize_reanalyse', test_umfpack_unsymmetric), &
+              new_unittest('umfpack_controls_reach_umfpack', test_umfpack_controls), &
               new_unittest('laplacian_with_dirichlet_both_solvers', test_laplacian_dirichlet), &
               new_unittest('metis_permutation_node_blocked', test_metis_permutation), &
               new_unittest('cholmod_metis_ordering_reduces_fill', test_cholmod_fill), &
@@ -146,6 +148,41 @@ contains
       if (allocated(error)) return
       call check_refactorize_reanalyse('UMFPACK', unsymmetric, error)
    end subroutine test_umfpack_unsymmetric
+
+   !> The strategy, ordering and refinement steps of umfpack_solver_t are the ones UMFPACK
+   !> uses (Info: UMFPACK_STRATEGY_USED = 18, UMFPACK_ORDERING_USED = 19, UMFPACK_IR_TAKEN =
+   !> 80; C index + 1 here). Defaults: the automatic strategy, which chooses the symmetric one
+   !> (3) for the structurally symmetric node-block pattern, METIS (3), no refinement.
+   subroutine test_umfpack_controls(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(umfpack_solver_t) :: solver
+      type(sparse_matrix_t) :: matrix
+      integer, allocatable :: connectivity(:, :)
+      integer :: n_nodes
+      integer(i8) :: state
+      call cube_connectivity(4, 3, 3, connectivity, n_nodes)
+      call matrix%create_node_block_pattern(n_nodes, connectivity)
+      state = 77
+      call assemble(matrix, connectivity, unsymmetric, state)
+      call solver%factorize(matrix, error)
+      if (allocated(error)) return
+      call solve_and_check(solver, matrix, state, error)
+      if (allocated(error)) return
+      call check(error, nint(solver%info(19)) == 3 .and. nint(solver%info(20)) == 3 .and. &
+                 nint(solver%info(81)) == 0, 'defaults: symmetric strategy, METIS, no refinement; Info '// &
+                 to_string(solver%info(19))//' '//to_string(solver%info(20))//' '//to_string(solver%info(81)))
+      if (allocated(error)) return
+      call solver%release()
+      solver%strategy = umfpack_strategy_unsymmetric
+      solver%ordering = umfpack_ordering_amd
+      call solver%factorize(matrix, error)
+      if (allocated(error)) return
+      call solve_and_check(solver, matrix, state, error)
+      if (allocated(error)) return
+      call check(error, nint(solver%info(19)) == 1 .and. nint(solver%info(20)) == 1, &
+                 'unsymmetric strategy and AMD (COLAMD) as set; Info '//to_string(solver%info(19))//' '// &
+                 to_string(solver%info(20)))
+   end subroutine test_umfpack_controls
 
    !> Node-blocked Laplacian of a 6 x 6 x 6 brick, bottom face (z = 0) fixed through
    !> apply_dirichlet with the mean absolute diagonal: SPD, solved by both solvers.
