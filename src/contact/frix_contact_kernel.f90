@@ -47,7 +47,7 @@
 !>   (tangent: force/length).
 module frix_contact_kernel
    use frix_kinds, only: dp
-   use frix_dual_number, only: dual_t, dual_constant, dual_variable, dual_dot, dual_cross, dual_norm, &
+   use frix_dual_number, only: dual_t, dual_constant, dual_variable, dual_dot, dual_cross, dual_norm, set_dual_length, &
                                operator(+), operator(-), operator(*), operator(/), operator(**)
    use frix_face_projection, only: face_node_xi, face_node_eta, face_shape_functions, face_position, &
                                    face_normal, project_onto_face, closest_point_in_face, face_contains
@@ -158,7 +158,7 @@ contains
       real(dp) :: inverse(2, 2), xi_start(2), used_anchor_xi(2), target(3), shape_real(4), d_xi(4), d_eta(4), old_anchor(3)
       real(dp) :: jacobian(2, 2), nodal_real(3, 4), lambda
       logical :: converged, fixed(2), anchor_fixed(2), slipping, other_face, smooth
-      integer :: a, k, n_unknowns, n_direct, used_branch
+      integer :: a, k, n_unknowns, n_direct, used_branch, previous_length
 
       other_face = present(x_anchor_face)
       smooth = present(patch_faces) .and. present(x_ring)
@@ -199,6 +199,8 @@ contains
          result%clamped = .true.
       end if
 
+      ! the duals' gradients as long as the unknowns seeded below (restored on return)
+      call set_dual_length(merge(n_direct + 12, n_direct, smooth), previous_length)
       ! Seed the 15 unknowns: slave xyz, then master node a xyz at 3a+1..3a+3.
       xs = dual_variable(x_slave, 1)
       do a = 1, 4
@@ -248,6 +250,7 @@ contains
          result%status = contact_open
          result%new_anchor_xi = result%xi
          result%new_anchor = x%value
+         call set_dual_length(previous_length)
          return
       end if
 
@@ -304,6 +307,7 @@ contains
          tangent(k, :n_direct) = fd(k)%gradient(:n_direct)
       end do
       if (smooth) call chain_nodal_normals(fd, n_direct, x_master, x_ring, patch_faces, tangent)
+      call set_dual_length(previous_length)
    end subroutine node_face_contact
 
    !> The tangent's part through the nodal normals: d fint/d x_b += (d fint/d n_a)(d n_a/d x_b)
@@ -352,7 +356,7 @@ contains
       type(dual_t) :: xs(3), gap, pressure, relative(3), traction(3), force(3)
       real(dp) :: normal(3), foot(3), used_anchor(3), lambda
       logical :: slipping
-      integer :: k, used_branch
+      integer :: k, used_branch, previous_length
 
       fint = 0.0_dp
       tangent = 0.0_dp
@@ -361,6 +365,7 @@ contains
       lambda = 0.0_dp
       if (present(multiplier)) lambda = multiplier
       normal = unit(plane_normal)
+      call set_dual_length(3, previous_length)   ! restored on return
       xs = dual_variable(x_slave, 1)
       gap = dual_dot(xs - plane_point, dual_constant(normal))
       foot = x_slave - gap%value*normal
@@ -369,6 +374,7 @@ contains
       result%new_anchor = foot
       if (.not. parameters%normal%active(gap%value, lambda)) then
          result%status = contact_open
+         call set_dual_length(previous_length)
          return
       end if
 
@@ -405,6 +411,7 @@ contains
          fint(k) = -force(k)%value
          tangent(k, :) = -force(k)%gradient(1:3)
       end do
+      call set_dual_length(previous_length)
    end subroutine node_plane_contact
 
    !> Trial traction t_trial = -eps_T (I - n n) g_rel (g_rel: slave position relative to the

@@ -19,7 +19,7 @@ module frix_dual_number
    implicit none
    private
 
-   public :: dual_t, dual_size
+   public :: dual_t, dual_size, dual_length, set_dual_length
    public :: dual_constant, dual_variable, dual_values
    public :: dual_dot, dual_cross, dual_norm, dual_sum
    public :: operator(+), operator(-), operator(*), operator(/), operator(**)
@@ -27,11 +27,16 @@ module frix_dual_number
    public :: sqrt, abs, assignment(=)
 
    integer, parameter :: dual_size = 39  !! maximum number of seeded unknowns
+   !> The gradient entries the operations compute, 1..dual_length (<= dual_size): a caller that
+   !> seeds fewer unknowns sets it (set_dual_length) and reads no entry beyond it; the others
+   !> are left undefined. dual_size unless set.
+   integer, protected :: dual_length = dual_size
 
-   !> A value and its gradient with respect to the seeded unknowns.
+   !> A value and its gradient with respect to the seeded unknowns (entries beyond dual_length
+   !> undefined: no default initialization, which would cost every temporary dual_size stores).
    type :: dual_t
       real(dp) :: value = 0.0_dp                   !! v
-      real(dp) :: gradient(dual_size) = 0.0_dp     !! dv/dq_k, k = 1..dual_size
+      real(dp) :: gradient(dual_size)              !! dv/dq_k, k = 1..dual_length
    end type dual_t
 
    interface operator(+)
@@ -73,12 +78,21 @@ module frix_dual_number
 
 contains
 
+   !> Set the number of gradient entries the operations compute (1..dual_size) and return the
+   !> previous one, to be set again when the caller is done.
+   subroutine set_dual_length(length, previous)
+      integer, intent(in) :: length
+      integer, intent(out), optional :: previous
+      if (present(previous)) previous = dual_length
+      dual_length = max(1, min(dual_size, length))
+   end subroutine set_dual_length
+
    !> A constant: value `value`, zero gradient.
    elemental function dual_constant(value) result(d)
       real(dp), intent(in) :: value
       type(dual_t) :: d
       d%value = value
-      d%gradient = 0.0_dp
+      d%gradient(:dual_length) = 0.0_dp
    end function dual_constant
 
    !> Seeded unknowns: values(k) becomes unknown number first_index + k - 1
@@ -90,7 +104,7 @@ contains
       integer :: k
       do k = 1, size(values)
          d(k)%value = values(k)
-         d(k)%gradient = 0.0_dp
+         d(k)%gradient(:dual_length) = 0.0_dp
          d(k)%gradient(first_index + k - 1) = 1.0_dp
       end do
    end function dual_variable
@@ -106,7 +120,7 @@ contains
       type(dual_t), intent(out) :: d
       real(dp), intent(in) :: value
       d%value = value
-      d%gradient = 0.0_dp
+      d%gradient(:dual_length) = 0.0_dp
    end subroutine assign_real
 
    !> Sum of the elements of a dual vector.
@@ -115,10 +129,10 @@ contains
       type(dual_t) :: s
       integer :: k
       s%value = 0.0_dp
-      s%gradient = 0.0_dp
+      s%gradient(:dual_length) = 0.0_dp
       do k = 1, size(a)
          s%value = s%value + a(k)%value
-         s%gradient = s%gradient + a(k)%gradient
+         s%gradient(:dual_length) = s%gradient(:dual_length) + a(k)%gradient(:dual_length)
       end do
    end function dual_sum
 
@@ -128,10 +142,11 @@ contains
       type(dual_t) :: s
       integer :: k
       s%value = 0.0_dp
-      s%gradient = 0.0_dp
+      s%gradient(:dual_length) = 0.0_dp
       do k = 1, size(a)
          s%value = s%value + a(k)%value*b(k)%value
-         s%gradient = s%gradient + b(k)%value*a(k)%gradient + a(k)%value*b(k)%gradient
+         s%gradient(:dual_length) = s%gradient(:dual_length) + b(k)%value*a(k)%gradient(:dual_length) &
+                                    + a(k)%value*b(k)%gradient(:dual_length)
       end do
    end function dual_dot
 
@@ -156,7 +171,7 @@ contains
       type(dual_t), intent(in) :: a, b
       type(dual_t) :: c
       c%value = a%value + b%value
-      c%gradient = a%gradient + b%gradient
+      c%gradient(:dual_length) = a%gradient(:dual_length) + b%gradient(:dual_length)
    end function add_dd
 
    elemental function add_dr(a, b) result(c)
@@ -164,7 +179,7 @@ contains
       real(dp), intent(in) :: b
       type(dual_t) :: c
       c%value = a%value + b
-      c%gradient = a%gradient
+      c%gradient(:dual_length) = a%gradient(:dual_length)
    end function add_dr
 
    elemental function add_rd(a, b) result(c)
@@ -172,7 +187,7 @@ contains
       type(dual_t), intent(in) :: b
       type(dual_t) :: c
       c%value = a + b%value
-      c%gradient = b%gradient
+      c%gradient(:dual_length) = b%gradient(:dual_length)
    end function add_rd
 
    elemental function plus_d(a) result(c)
@@ -185,7 +200,7 @@ contains
       type(dual_t), intent(in) :: a, b
       type(dual_t) :: c
       c%value = a%value - b%value
-      c%gradient = a%gradient - b%gradient
+      c%gradient(:dual_length) = a%gradient(:dual_length) - b%gradient(:dual_length)
    end function subtract_dd
 
    elemental function subtract_dr(a, b) result(c)
@@ -193,7 +208,7 @@ contains
       real(dp), intent(in) :: b
       type(dual_t) :: c
       c%value = a%value - b
-      c%gradient = a%gradient
+      c%gradient(:dual_length) = a%gradient(:dual_length)
    end function subtract_dr
 
    elemental function subtract_rd(a, b) result(c)
@@ -201,14 +216,14 @@ contains
       type(dual_t), intent(in) :: b
       type(dual_t) :: c
       c%value = a - b%value
-      c%gradient = -b%gradient
+      c%gradient(:dual_length) = -b%gradient(:dual_length)
    end function subtract_rd
 
    elemental function minus_d(a) result(c)
       type(dual_t), intent(in) :: a
       type(dual_t) :: c
       c%value = -a%value
-      c%gradient = -a%gradient
+      c%gradient(:dual_length) = -a%gradient(:dual_length)
    end function minus_d
 
    !> d(ab) = b da + a db
@@ -216,7 +231,7 @@ contains
       type(dual_t), intent(in) :: a, b
       type(dual_t) :: c
       c%value = a%value*b%value
-      c%gradient = b%value*a%gradient + a%value*b%gradient
+      c%gradient(:dual_length) = b%value*a%gradient(:dual_length) + a%value*b%gradient(:dual_length)
    end function multiply_dd
 
    elemental function multiply_dr(a, b) result(c)
@@ -224,7 +239,7 @@ contains
       real(dp), intent(in) :: b
       type(dual_t) :: c
       c%value = a%value*b
-      c%gradient = b*a%gradient
+      c%gradient(:dual_length) = b*a%gradient(:dual_length)
    end function multiply_dr
 
    elemental function multiply_rd(a, b) result(c)
@@ -232,7 +247,7 @@ contains
       type(dual_t), intent(in) :: b
       type(dual_t) :: c
       c%value = a*b%value
-      c%gradient = a*b%gradient
+      c%gradient(:dual_length) = a*b%gradient(:dual_length)
    end function multiply_rd
 
    !> d(a/b) = (da - (a/b) db)/b
@@ -240,7 +255,7 @@ contains
       type(dual_t), intent(in) :: a, b
       type(dual_t) :: c
       c%value = a%value/b%value
-      c%gradient = (a%gradient - c%value*b%gradient)/b%value
+      c%gradient(:dual_length) = (a%gradient(:dual_length) - c%value*b%gradient(:dual_length))/b%value
    end function divide_dd
 
    elemental function divide_dr(a, b) result(c)
@@ -248,7 +263,7 @@ contains
       real(dp), intent(in) :: b
       type(dual_t) :: c
       c%value = a%value/b
-      c%gradient = a%gradient/b
+      c%gradient(:dual_length) = a%gradient(:dual_length)/b
    end function divide_dr
 
    !> d(a/b) = -(a/b^2) db
@@ -257,7 +272,7 @@ contains
       type(dual_t), intent(in) :: b
       type(dual_t) :: c
       c%value = a/b%value
-      c%gradient = (-c%value/b%value)*b%gradient
+      c%gradient(:dual_length) = (-c%value/b%value)*b%gradient(:dual_length)
    end function divide_rd
 
    !> d(a^n) = n a^(n-1) da (n = 0 gives the constant 1).
@@ -267,10 +282,10 @@ contains
       type(dual_t) :: c
       if (n == 0) then
          c%value = 1.0_dp
-         c%gradient = 0.0_dp
+         c%gradient(:dual_length) = 0.0_dp
       else
          c%value = a%value**n
-         c%gradient = (real(n, dp)*a%value**(n - 1))*a%gradient
+         c%gradient(:dual_length) = (real(n, dp)*a%value**(n - 1))*a%gradient(:dual_length)
       end if
    end function power_di
 
@@ -279,7 +294,7 @@ contains
       type(dual_t), intent(in) :: a
       type(dual_t) :: c
       c%value = sqrt(a%value)
-      c%gradient = a%gradient/(2.0_dp*c%value)
+      c%gradient(:dual_length) = a%gradient(:dual_length)/(2.0_dp*c%value)
    end function sqrt_d
 
    !> d|a| = sign(a) da (the derivative at a = 0 is taken as that of +a).
