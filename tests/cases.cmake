@@ -60,12 +60,6 @@ foreach(signal INT TERM KILL)
                    ${CMAKE_CURRENT_SOURCE_DIR}/solver/stop_signal.dck ${signal})
   set_tests_properties(solver_stop_sig${signal} PROPERTIES LABELS regression TIMEOUT ${scaled_300})
 endforeach()
-# A system too large for CHOLMOD's 32-bit interface is reported as such (0.9 M equations,
-# 1.4 GB: slow).
-add_test(NAME solver_too_large_cholmod
-         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/too_large_cholmod.dck 1
-                 "CHOLMOD: the problem is too large for the solver|902289 equations")
-set_tests_properties(solver_too_large_cholmod PROPERTIES LABELS "regression;slow" TIMEOUT ${scaled_600})
 add_test(NAME solver_limit_point_values
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_check.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/solver/limit_point_cutback.dck)
