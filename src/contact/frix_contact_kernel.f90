@@ -225,7 +225,7 @@ contains
          call edge_point(xs, xm, fixed, xi)
       else if (smooth .and. .not. result%clamped) then
          ! implicit-function derivative of r(xi*, q) = 0: dxi*/dq = -J^{-1} dr/dq
-         call smooth_residual(xs, xm, nodal, xi, residual)
+         call dual_smooth_residual(xs, xm, nodal, xi, residual)
          inverse = inverse_2x2(jacobian)
          xi(1) = xi(1) - (inverse(1, 1)*residual(1) + inverse(1, 2)*residual(2))
          xi(2) = xi(2) - (inverse(2, 1)*residual(1) + inverse(2, 2)*residual(2))
@@ -520,7 +520,7 @@ contains
 
    !> Residual of the projection along the smoothed normal field: r_k = d . a_k - (d . n)(n . a_k),
    !> d = x_s - x(xi); zero when d is parallel to n(xi).
-   pure subroutine smooth_residual(xs, xm, nodal, xi, residual)
+   pure subroutine dual_smooth_residual(xs, xm, nodal, xi, residual)
       type(dual_t), intent(in) :: xs(3), xm(3, 4), nodal(3, 4), xi(2)
       type(dual_t), intent(out) :: residual(2)
       type(dual_t) :: shape(4), x(3), a1(3), a2(3), normal(3), distance(3), normal_distance
@@ -530,7 +530,7 @@ contains
       normal_distance = dual_dot(distance, normal)
       residual(1) = dual_dot(distance, a1) - normal_distance*dual_dot(normal, a1)
       residual(2) = dual_dot(distance, a2) - normal_distance*dual_dot(normal, a2)
-   end subroutine smooth_residual
+   end subroutine dual_smooth_residual
 
    !> Inverse of a 2 x 2 matrix (Cramer's rule); the caller makes sure it is regular.
    pure function inverse_2x2(matrix) result(inverse)

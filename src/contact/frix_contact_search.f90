@@ -55,17 +55,6 @@ module frix_contact_search
       integer, allocatable :: cell_start(:), cell_faces(:)
    end type face_grid_t
 
-   !> The master surface of a pass at the current displacements.
-   type :: master_state_t
-      real(dp), allocatable :: x_faces(:, :, :)     !! (3, 4, n_faces) current face nodes
-      !> (3, 4, n_faces) smoothed nodal normals of each face's nodes: per face, since with a
-      !> feature angle a node on a sharp edge has one normal on each side of it; those of face f
-      !> are set once has_normals(f)
-      real(dp), allocatable :: face_normals(:, :, :)
-      logical, allocatable :: has_normals(:)
-      type(face_grid_t) :: grid
-   end type master_state_t
-
    !> A candidate face of a slave node: its facet distance (to the bounded face's closest point)
    !> and, once projected along the smoothed normals, whether that projection qualifies
    !> (inside the face, gap within the band) and its distance.
@@ -77,6 +66,31 @@ module frix_contact_search
       real(dp) :: smooth_distance = 0.0_dp
    end type candidate_t
 
+   !> The master surface of a pass at the current displacements.
+   type :: master_state_t
+      real(dp), allocatable :: x_faces(:, :, :)     !! (3, 4, n_faces) current face nodes
+      !> (3, 4, n_faces) smoothed nodal normals of each face's nodes: per face, since with a
+      !> feature angle a node on a sharp edge has one normal on each side of it; those of face f
+      !> are set once has_normals(f)
+      real(dp), allocatable :: face_normals(:, :, :)
+      logical, allocatable :: has_normals(:)
+      !> (n_faces) with smoothed normals: 2 t (1 + t) D, t the edge tolerance, D the largest
+      !> distance between the face's nodes (nearest_inside_face)
+      real(dp), allocatable :: reach(:)
+      type(face_grid_t) :: grid
+      !> room for one slave node's candidates (the most faces a grid cell holds)
+      type(candidate_t), allocatable :: candidates(:)
+   end type master_state_t
+
+   !> One slave node's search: its current position, its face so far (kept on ties) and the
+   !> pair's edge tolerance (parent coordinates).
+   type :: slave_query_t
+      real(dp) :: x_slave(3) = 0.0_dp
+      integer :: current = 0
+      real(dp) :: edge_tolerance = 0.0_dp
+   end type slave_query_t
+
+
 contains
 
    !> The nearest master face of every slave node of a deformable pass at displacements u
@@ -87,7 +101,7 @@ contains
       real(dp), intent(in) :: edge_tolerance     !! the pair's, parent coordinates
       type(contact_pass_t), intent(inout) :: pass
       type(master_state_t) :: master
-      real(dp) :: x_slave(3)
+      type(slave_query_t) :: query
       integer :: f, i
       if (size(pass%faces, 2) == 0) then
          pass%face = 0
@@ -98,69 +112,74 @@ contains
          master%x_faces(:, :, f) = current_nodes(coords, u, pass%faces(:, f))
       end do
       call build_face_grid(master%x_faces, pass%band, master%grid)
+      associate (start => master%grid%cell_start)
+         allocate (master%candidates(maxval(start(2:) - start(:size(start) - 1))))
+      end associate
       if (pass%smooth) then
          allocate (master%face_normals(3, 4, size(pass%faces, 2)))
          allocate (master%has_normals(size(pass%faces, 2)), source=.false.)
+         allocate (master%reach(size(pass%faces, 2)))
+         do f = 1, size(pass%faces, 2)
+            master%reach(f) = 2.0_dp*edge_tolerance*(1.0_dp + edge_tolerance)*node_spread(master%x_faces(:, :, f))
+         end do
       else
          allocate (master%face_normals(3, 4, 0))   ! facet normals: none (allocated for a defined descriptor)
       end if
+      query%edge_tolerance = edge_tolerance
       do i = 1, size(pass%slave_nodes)
          associate (s => pass%slave_nodes(i))
-            x_slave = coords(:, s) + u(3*s - 2:3*s)
+            query%x_slave = coords(:, s) + u(3*s - 2:3*s)
          end associate
-         pass%face(i) = nearest_face(coords, u, pass, master, x_slave, pass%face(i), edge_tolerance)
+         query%current = pass%face(i)
+         pass%face(i) = nearest_face(coords, u, pass, master, query)
       end do
    end subroutine assign_faces
 
-   !> The face given to a slave node at x_slave (0: none), `current` its face so far.
-   integer function nearest_face(coords, u, pass, master, x_slave, current, edge_tolerance) result(face)
+   !> The face given to a slave node (0: none). coords and u: as for assign_faces (the nodal
+   !> normals of a face projected for the first time in this search).
+   integer function nearest_face(coords, u, pass, master, query) result(face)
       real(dp), intent(in) :: coords(:, :), u(:)
       type(contact_pass_t), intent(in) :: pass
       type(master_state_t), intent(inout) :: master
-      real(dp), intent(in) :: x_slave(3)
-      integer, intent(in) :: current
-      real(dp), intent(in) :: edge_tolerance
+      type(slave_query_t), intent(in) :: query
       real(dp) :: x_face(3, 4), xi(2), closest(3), distance, gap, best
       integer :: k, f, c, best_face, n_candidates
       logical :: fixed(2)
-      type(candidate_t), allocatable :: candidates(:)
       best = 0.5_dp*huge(1.0_dp)   ! best*(1 + tie_tolerance) must not overflow
       best_face = 0
       face = 0
-      c = grid_cell(master%grid, x_slave)
+      c = grid_cell(master%grid, query%x_slave)
       if (c == 0) return
-      allocate (candidates(master%grid%cell_start(c + 1) - master%grid%cell_start(c)))
       n_candidates = 0
       do k = master%grid%cell_start(c) + 1, master%grid%cell_start(c + 1)
          f = master%grid%cell_faces(k)
-         if (any(x_slave < master%grid%lower(:, f)) .or. any(x_slave > master%grid%upper(:, f))) cycle
+         if (any(query%x_slave < master%grid%lower(:, f)) .or. any(query%x_slave > master%grid%upper(:, f))) cycle
          x_face = master%x_faces(:, :, f)
-         call closest_point_in_face(x_face, x_slave, 0.0_dp, xi, fixed)
+         call closest_point_in_face(x_face, query%x_slave, 0.0_dp, xi, fixed)
          closest = face_position(x_face, xi)
-         distance = norm2(x_slave - closest)
+         distance = norm2(query%x_slave - closest)
          n_candidates = n_candidates + 1
-         candidates(n_candidates) = candidate_t(f, distance, n_candidates)
-         gap = dot_product(x_slave - closest, face_normal(x_face, xi))
+         master%candidates(n_candidates) = candidate_t(f, distance, n_candidates)
+         gap = dot_product(query%x_slave - closest, face_normal(x_face, xi))
          if (gap > pass%band) cycle
          ! beyond the master surface's boundary by more than the extension zone: not this
          ! face's (another face may still hold the node; a tie decides at its boundary by its
          ! own coverage rule, frix_tie_pass)
          if (.not. pass%tied) then
-            if (beyond_free_edge(x_face, pass%free_edge(:, f), x_slave, xi, fixed)) cycle
+            if (beyond_free_edge(x_face, pass%free_edge(:, f), query%x_slave, xi, fixed)) cycle
          end if
-         call keep_nearer(f, distance, current, best, best_face)
+         call keep_nearer(f, distance, query%current, best, best_face)
       end do
       face = best_face
       ! smoothed normals: the nearest face whose normal projection lies inside it, else
       ! (beyond a free edge of the master surface, or no projection) the nearest face
       if (pass%smooth) then
-         f = nearest_inside_face(coords, u, pass, master, x_slave, current, edge_tolerance, &
-                                 candidates(:n_candidates))
+         f = nearest_inside_face(coords, u, pass, master, query, n_candidates)
          if (f > 0) face = f
       end if
    end function nearest_face
 
-   !> The nearest of the candidate faces whose normal projection along the smoothed normals
+   !> The nearest of the candidate faces (master%candidates(:n_candidates)) whose normal projection along the smoothed normals
    !> lies inside it with a gap within the band (0: none), chosen as keep_nearer chooses in the
    !> grid's order. Candidates are projected in the order of their facet distances d_f, and
    !> none is projected once d_f exceeds the nearest distance found by more than the tie
@@ -168,42 +187,42 @@ contains
    !> edge_tolerance lies at least d_f - 2 t (1 + t) D from x_slave (t the edge tolerance, D
    !> the largest distance between the face's nodes, which bounds |x_,k| on the extrapolated
    !> face), so that face can neither be nearer nor tie.
-   integer function nearest_inside_face(coords, u, pass, master, x_slave, current, edge_tolerance, candidates) &
-      result(best_face)
+   integer function nearest_inside_face(coords, u, pass, master, query, n_candidates) result(best_face)
       real(dp), intent(in) :: coords(:, :), u(:)
       type(contact_pass_t), intent(in) :: pass
       type(master_state_t), intent(inout) :: master
-      real(dp), intent(in) :: x_slave(3)
-      integer, intent(in) :: current
-      real(dp), intent(in) :: edge_tolerance
-      type(candidate_t), intent(inout) :: candidates(:)
-      type(candidate_t) :: by_distance(size(candidates))
-      real(dp) :: best, distance, gap, reach
+      type(slave_query_t), intent(in) :: query
+      integer, intent(in) :: n_candidates
+      type(candidate_t) :: by_distance(n_candidates)
+      real(dp) :: best, distance, gap
       integer :: k, f
       logical :: inside
-      by_distance = candidates
+      by_distance = master%candidates(:n_candidates)
       call sort_by_distance(by_distance)
       best = 0.5_dp*huge(1.0_dp)
-      do k = 1, size(by_distance)
+      do k = 1, n_candidates
          f = by_distance(k)%face
-         reach = 2.0_dp*edge_tolerance*(1.0_dp + edge_tolerance)*node_spread(master%x_faces(:, :, f))
-         if (by_distance(k)%distance - reach > best*(1.0_dp + tie_tolerance)) exit
+         if (by_distance(k)%distance - master%reach(f) > best*(1.0_dp + tie_tolerance)) exit
          if (.not. master%has_normals(f)) then
             master%face_normals(:, :, f) = face_nodal_normals(coords, u, pass, f)
             master%has_normals(f) = .true.
          end if
-         call smooth_candidate(master%x_faces(:, :, f), master%face_normals(:, :, f), x_slave, edge_tolerance, &
-                               distance, gap, inside)
+         call smooth_candidate(master%x_faces(:, :, f), master%face_normals(:, :, f), query%x_slave, &
+                               query%edge_tolerance, distance, gap, inside)
          if (.not. (inside .and. gap <= pass%band)) cycle
-         candidates(by_distance(k)%position)%qualifies = .true.
-         candidates(by_distance(k)%position)%smooth_distance = distance
+         associate (candidate => master%candidates(by_distance(k)%position))
+            candidate%qualifies = .true.
+            candidate%smooth_distance = distance
+         end associate
          best = min(best, distance)
       end do
       best = 0.5_dp*huge(1.0_dp)
       best_face = 0
-      do k = 1, size(candidates)
-         if (candidates(k)%qualifies) &
-            call keep_nearer(candidates(k)%face, candidates(k)%smooth_distance, current, best, best_face)
+      do k = 1, n_candidates
+         associate (candidate => master%candidates(k))
+            if (candidate%qualifies) &
+               call keep_nearer(candidate%face, candidate%smooth_distance, query%current, best, best_face)
+         end associate
       end do
    end function nearest_inside_face
 

@@ -43,18 +43,7 @@ contains
       real(dp), intent(in) :: x_face(3, 4), x_ring(:, :)
       integer, intent(in) :: patch_faces(:, :)
       real(dp) :: nodal(3, 4)
-      real(dp) :: corner_unit(3), corner_area
-      integer :: a, f, j
-      do a = 1, 4
-         nodal(:, a) = 0.0_dp
-         do f = 1, size(patch_faces, 2)
-            j = findloc(patch_faces(:, f), a, dim=1)
-            if (j == 0) cycle
-            call corner_normal(corner_nodes(x_face, x_ring, patch_faces(:, f)), j, corner_unit, corner_area)
-            nodal(:, a) = nodal(:, a) + corner_unit
-         end do
-         nodal(:, a) = nodal(:, a)/sqrt(dot_product(nodal(:, a), nodal(:, a)))
-      end do
+      call nodal_normals(x_face, x_ring, patch_faces, nodal)
    end function patch_normals
 
    !> The nodal normals (as patch_normals) and their derivatives:
@@ -65,36 +54,48 @@ contains
       integer, intent(in) :: patch_faces(:, :)
       real(dp), intent(out) :: nodal(3, 4)
       real(dp), intent(out) :: derivative(12, 3*(4 + size(x_ring, 2)))
-      real(dp) :: corners(3, 4), corner_unit(3), corner_area, projector(3, 3), block(3, 3), a1(3), a2(3)
-      real(dp) :: shape(4), d_xi(4), d_eta(4), sum_derivative(3, 3*(4 + size(x_ring, 2))), length
+      call nodal_normals(x_face, x_ring, patch_faces, nodal, derivative)
+   end subroutine patch_normal_derivatives
+
+   !> n_a = s/|s|, s the sum of the corner unit normals u of the patch faces at node a, and
+   !> (if present) dn_a/dx_b = (I - n n)/|s| sum du/dx_b, du/dx_b = (I - u u)/|c| dc/dx_b,
+   !> dc/dx_b = N_b,2 [x_,1]x - N_b,1 [x_,2]x (the module's header).
+   pure subroutine nodal_normals(x_face, x_ring, patch_faces, nodal, derivative)
+      real(dp), intent(in) :: x_face(3, 4), x_ring(:, :)
+      integer, intent(in) :: patch_faces(:, :)
+      real(dp), intent(out) :: nodal(3, 4)
+      real(dp), intent(out), optional :: derivative(:, :)
+      real(dp) :: corner_unit(3), corner_area, projector(3, 3), a1(3), a2(3), d_xi(4), d_eta(4), length
+      real(dp) :: sum_derivative(3, 3*(4 + size(x_ring, 2)))   ! d s / d x_b of node a
       integer :: a, f, j, b, node, i
-      derivative = 0.0_dp
+      if (present(derivative)) derivative = 0.0_dp
       do a = 1, 4
          nodal(:, a) = 0.0_dp
-         sum_derivative = 0.0_dp
+         if (present(derivative)) sum_derivative = 0.0_dp
          do f = 1, size(patch_faces, 2)
             j = findloc(patch_faces(:, f), a, dim=1)
             if (j == 0) cycle
-            corners = corner_nodes(x_face, x_ring, patch_faces(:, f))
-            call corner_normal(corners, j, corner_unit, corner_area, a1, a2)
+            call corner_normal(corner_nodes(x_face, x_ring, patch_faces(:, f)), j, corner_unit, corner_area, &
+                               a1, a2, d_xi, d_eta)
             nodal(:, a) = nodal(:, a) + corner_unit
-            call face_shape_functions([face_node_xi(j), face_node_eta(j)], shape, d_xi, d_eta)
+            if (.not. present(derivative)) cycle
             projector = unit_projector(corner_unit)/corner_area
             do b = 1, 4
                if (d_xi(b) == 0.0_dp .and. d_eta(b) == 0.0_dp) cycle
                node = patch_faces(b, f)
-               block = matmul(projector, d_eta(b)*skew(a1) - d_xi(b)*skew(a2))
-               sum_derivative(:, 3*node - 2:3*node) = sum_derivative(:, 3*node - 2:3*node) + block
+               sum_derivative(:, 3*node - 2:3*node) = sum_derivative(:, 3*node - 2:3*node) + &
+                                                      matmul(projector, d_eta(b)*skew(a1) - d_xi(b)*skew(a2))
             end do
          end do
          length = sqrt(dot_product(nodal(:, a), nodal(:, a)))
          nodal(:, a) = nodal(:, a)/length
+         if (.not. present(derivative)) cycle
          projector = unit_projector(nodal(:, a))/length
          do i = 1, 3
             derivative(3*(a - 1) + i, :) = matmul(projector(i, :), sum_derivative)
          end do
       end do
-   end subroutine patch_normal_derivatives
+   end subroutine nodal_normals
 
    !> The smoothed normal m/|m|, m = sum_a N_a(xi) n_a, from the nodal normals.
    pure function smooth_normal_at(nodal, xi) result(normal)
@@ -195,22 +196,19 @@ contains
       end do
    end function corner_nodes
 
-   !> The unit normal u = c/|c| of a face at its corner j, c = x_,1 x x_,2 there, with |c|
-   !> and the tangents x_,1, x_,2.
-   pure subroutine corner_normal(corners, j, corner_unit, corner_area, a1, a2)
+   !> The unit normal u = c/|c| of a face at its corner j, c = x_,1 x x_,2 there, with |c|,
+   !> the tangents x_,1, x_,2 and the shape functions' derivatives N_b,1, N_b,2 at the corner.
+   pure subroutine corner_normal(corners, j, corner_unit, corner_area, a1, a2, d_xi, d_eta)
       real(dp), intent(in) :: corners(3, 4)
       integer, intent(in) :: j
-      real(dp), intent(out) :: corner_unit(3), corner_area
-      real(dp), intent(out), optional :: a1(3), a2(3)
-      real(dp) :: shape(4), d_xi(4), d_eta(4), tangent1(3), tangent2(3)
+      real(dp), intent(out) :: corner_unit(3), corner_area, a1(3), a2(3), d_xi(4), d_eta(4)
+      real(dp) :: shape(4)
       call face_shape_functions([face_node_xi(j), face_node_eta(j)], shape, d_xi, d_eta)
-      tangent1 = matmul(corners, d_xi)
-      tangent2 = matmul(corners, d_eta)
-      corner_unit = cross_product(tangent1, tangent2)
+      a1 = matmul(corners, d_xi)
+      a2 = matmul(corners, d_eta)
+      corner_unit = cross_product(a1, a2)
       corner_area = sqrt(dot_product(corner_unit, corner_unit))
       corner_unit = corner_unit/corner_area
-      if (present(a1)) a1 = tangent1
-      if (present(a2)) a2 = tangent2
    end subroutine corner_normal
 
    !> I - u u for a unit vector u.
