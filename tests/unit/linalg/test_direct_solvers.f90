@@ -152,7 +152,9 @@ contains
    !> The strategy, ordering and refinement steps of umfpack_solver_t are the ones UMFPACK
    !> uses (Info: UMFPACK_STRATEGY_USED = 18, UMFPACK_ORDERING_USED = 19, UMFPACK_IR_TAKEN =
    !> 80; C index + 1 here). Defaults: the automatic strategy, which chooses the symmetric one
-   !> (3) for the structurally symmetric node-block pattern, METIS (3), no refinement.
+   !> (3) for the structurally symmetric node-block pattern, METIS (3), no refinement (with
+   !> UMFPACK's default IRSTEP 2 this system takes 1 refinement step, measured: the check fails
+   !> if the setting does not reach UMFPACK).
    subroutine test_umfpack_controls(error)
       type(error_t), allocatable, intent(out) :: error
       type(umfpack_solver_t) :: solver
