@@ -270,7 +270,9 @@ contains
       if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
           .and. on_path(model, state, path, iteration, u_norm)) then
          report%fully_converged = residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference &
-                                  .or. correction_norm <= model%controls%tol_displacement*u_norm
+                                  .or. correction_norm <= model%controls%tol_displacement*u_norm &
+                                  .or. next_correction_small(model, report, iteration, residual_norm, &
+                                                             correction_norm, u_norm)
          ! (residual_only after one correction at least: its caller acts on the solution)
          if (report%fully_converged .or. (waive_displacement .and. iteration > 0)) then
             outcome = outcome_converged
@@ -294,6 +296,26 @@ contains
          outcome = outcome_failed
       end if
    end subroutine test_convergence
+
+   !> Whether the correction the next iteration would make, estimated as the last one scaled by
+   !> the residual's contraction over the last iteration, |du_k| ||r_k|| / ||r_k-1||, meets the
+   !> displacement criterion. With Newton's quadratic convergence the next correction is
+   !> K^-1 r_k and shrinks with the residual; the estimate is trusted only when the residual
+   !> fell by at least `contraction_limit` in the last iteration.
+   logical function next_correction_small(model, report, iteration, residual_norm, correction_norm, u_norm)
+      type(model_t), intent(in) :: model
+      type(newton_report_t), intent(in) :: report
+      integer, intent(in) :: iteration
+      real(dp), intent(in) :: residual_norm, correction_norm, u_norm
+      real(dp), parameter :: contraction_limit = 1.0e-3_dp
+      real(dp) :: contraction
+      next_correction_small = .false.
+      if (iteration < 1) return
+      if (report%residual_norms(iteration - 1) <= 0.0_dp) return
+      contraction = residual_norm/report%residual_norms(iteration - 1)
+      if (contraction > contraction_limit) return
+      next_correction_small = contraction*correction_norm <= model%controls%tol_displacement*u_norm
+   end function next_correction_small
 
    !> One Newton correction: the constrained system solved, the load factor's correction of
    !> path following (`time_correction`), every value checked finite, the iterate and `time`
