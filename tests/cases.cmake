@@ -110,6 +110,16 @@ set_tests_properties(restart_plastic PROPERTIES LABELS "regression;plasticity")
 add_test(NAME restart_tied COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
          ${PROJECT_SOURCE_DIR}/inputs/s5_buried_pipe/s5_tied.dck 1.1 1.3)
 set_tests_properties(restart_tied PROPERTIES LABELS "regression;contact")
+# After cut-backs, with EXTRAPOLATION Linear: the increment size in force and the last
+# increment's displacement rate come back from the HDF5 file (restarts inside steps 1, 2, 3).
+add_test(NAME restart_cutback COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_cutback.dck 1.2 2.3 3.2)
+set_tests_properties(restart_cutback PROPERTIES LABELS regression)
+# Inside a CONTROL Path step (before and after the limit point): the driven displacement per
+# increment comes back from the HDF5 file.
+add_test(NAME restart_path COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_path.dck 1.5 1.12)
+set_tests_properties(restart_path PROPERTIES LABELS regression)
 
 # Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
 foreach(script plot_history plot_line render_mesh mohr_coulomb compare_runs)

@@ -133,7 +133,7 @@ def main():
         f.write('=' * 70 + '\n' + header + '=' * 70 + '\n')
         f.write('-' * 57 + 'PROBLEM TYP\nPROBLEMTYP   Structure\n')
         f.write('-' * 62 + 'STATIC\nKINTYP Geo_Lin\nMAXITER 30  TOLRESID 1.0e-8  '
-                'TOLDISP 1.0e-8\nMAXCUT 6\nSOLVER Auto\n')
+                'TOLDISP 1.0e-8\nMAXCUT 6  EXTRAPOLATION Linear\nSOLVER Auto\n')
         f.write('-' * 57 + 'LOAD CURVES\n')
         f.write('CURVE 1 POINTS 0.0 0.0  1.0 1.0  2.0 1.0   // q: ramp in step 1, held\n')
         f.write('CURVE 2 POINTS 0.0 0.0  1.0 0.0  2.0 1.0   // u_x: 0 in step 1, ramp in '

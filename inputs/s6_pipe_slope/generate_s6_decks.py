@@ -363,6 +363,7 @@ MAXITER      30
 TOLRESID     1.0e-8
 TOLDISP      1.0e-8
 MAXCUT       6
+EXTRAPOLATION Linear                    // each increment starts from the last one's rate
 SOLVER       Auto
 ---------------------------------------------------------LOAD CURVES
 CURVE 1 POINTS 0.0 0.0  1.0 1.0  3.0 1.0              // soil weight: on in step 1, held

@@ -21,13 +21,17 @@ module frix_analysis_state
    private
 
    public :: analysis_state_t, create_analysis_state, commit_state, commit_solution, restore_state
-   public :: take_displacement_reference, reported_displacement
+   public :: take_displacement_reference, reported_displacement, extrapolate_displacements
 
    type :: analysis_state_t
       real(dp) :: time = 0.0_dp               !! pseudo time (load factor) of `u`
       real(dp) :: committed_time = 0.0_dp
       real(dp), allocatable :: u(:)           !! (3*n_nodes) current total displacements, node-major
       real(dp), allocatable :: committed_u(:)
+      !> (3*n_nodes) du/dt of the last converged increment, which began at `rate_start`
+      !> [length per unit pseudo time]; zero before the first increment
+      real(dp), allocatable :: rate(:)
+      real(dp) :: rate_start = -1.0_dp
       !> (3*n_nodes) total displacements from which the reported ones are measured
       !> (RESET_DISPLACEMENT); unallocated: none taken, the total displacements are reported
       real(dp), allocatable :: reference_u(:)
@@ -65,6 +69,7 @@ contains
       allocate (state%alpha(max_enhanced, model%mesh%n_elements), source=0.0_dp)
       allocate (state%history(max_state, max_points, model%mesh%n_elements), source=0.0_dp)
       state%committed_u = state%u
+      allocate (state%rate(n_equations), source=0.0_dp)
       state%committed_alpha = state%alpha
       state%committed_history = state%history
       if (allocated(model%contact_pairs)) state%has_contact = size(model%contact_pairs) > 0
@@ -76,6 +81,10 @@ contains
       type(analysis_state_t), intent(inout) :: state
       real(dp) :: dt
       dt = state%time - state%committed_time
+      if (dt > 0.0_dp) then
+         state%rate = (state%u - state%committed_u)/dt
+         state%rate_start = state%committed_time
+      end if
       call commit_solution(state)
       if (state%has_contact) call commit_contact(state%contact, dt)
    end subroutine commit_state
@@ -89,6 +98,18 @@ contains
       state%committed_alpha = state%alpha
       state%committed_history = state%history
    end subroutine commit_solution
+
+   !> The start of the increment to pseudo time `time` by linear extrapolation (Abaqus's
+   !> EXTRAPOLATION=LINEAR): u = u_committed + (time - t_committed) du/dt of the last converged
+   !> increment, when that increment lies in the same step (step s spans (s - 1, s]); else the
+   !> committed displacements. Prescribed components are set afterwards by the Newton solver.
+   subroutine extrapolate_displacements(state, time)
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      real(dp), parameter :: slack = 1.0e-12_dp
+      if (state%rate_start < real(ceiling(time - slack), dp) - 1.0_dp - slack) return
+      state%u = state%committed_u + (time - state%committed_time)*state%rate
+   end subroutine extrapolate_displacements
 
    !> Go back to the last converged increment (after a failed increment). The contact
    !> system's committed part is untouched by the iterations (each search and assembly starts

@@ -69,6 +69,15 @@ module frix_increment_results
       type(named_field_t), allocatable :: point_fields(:)   !! the materials' named history variables
       real(dp), allocatable :: alpha(:, :)          !! (max EAS parameters, n_elements) committed
       real(dp), allocatable :: history(:, :, :)     !! (n_state, n_points, n_elements) committed
+      !> the increment control after this increment, for an exact restart (HDF5 group
+      !> `control`, docs/hdf5-layout.md): the size of the next increment of the step [pseudo
+      !> time] after cut-backs and growth, the driven displacement per nominal increment of a
+      !> CONTROL Path step [length], the last increment's displacement rate (3, n_nodes) and
+      !> the pseudo time at which that increment began (frix_analysis_state's rate, rate_start)
+      real(dp) :: increment_size = 0.0_dp
+      real(dp) :: path_increment = 0.0_dp
+      real(dp), allocatable :: displacement_rate(:, :)
+      real(dp) :: rate_start = -1.0_dp
       logical :: has_contact = .false.
       type(contact_pass_results_t), allocatable :: contact(:)   !! one per contact pass
       !> per node, over all passes: pressure, traction (3, n), gap, status (0 open, 1 stick,

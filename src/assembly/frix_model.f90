@@ -92,6 +92,10 @@ module frix_model
       !> and finally 1, each stage starting from the previous one's solution (frix_driver).
       !> Empty: no continuation.
       real(dp), allocatable :: friction_continuation(:)
+      !> EXTRAPOLATION Linear: an increment's iterations start from the committed displacements
+      !> plus the last increment's rate times the new increment size, when the last increment
+      !> belongs to the same step (frix_analysis_state, extrapolate_displacements)
+      logical :: extrapolate = .false.
    end type solver_controls_t
 
    !> One column of the CSV history: displacement ('U') or reaction ('R') of a node's DOF.

@@ -39,7 +39,7 @@ contains
    end subroutine read_problem_pair
 
    !> The Newton controls of STATIC: KINTYP, MAXITER, MAXCUT, TOLRESID, TOLDISP, SOLVER,
-   !> MU_CONTINUATION, NEWTONRAPHSO.
+   !> MU_CONTINUATION, EXTRAPOLATION, NEWTONRAPHSO.
    subroutine read_static_pair(reader, model, pair)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
@@ -77,6 +77,13 @@ contains
             if (ok) model%controls%linear_solver = to_upper(word)
          case ('MU_CONTINUATION')
             call read_friction_continuation(reader, line, position, model%controls%friction_continuation, ok)
+         case ('EXTRAPOLATION')
+            call reader%take_word(line, position, 'EXTRAPOLATION value', word, ok)
+            if (ok .and. to_upper(word) /= 'LINEAR' .and. to_upper(word) /= 'NONE') then
+               call reader%report(line, position - 1, 'unknown EXTRAPOLATION (expected Linear or None)')
+               ok = .false.
+            end if
+            if (ok) model%controls%extrapolate = to_upper(word) == 'LINEAR'
          case ('NEWTONRAPHSO')
             call reader%take_word(line, position, 'NEWTONRAPHSO value', word, ok)
             if (ok .and. to_upper(word) /= 'LOAD_CONTROL' .and. to_upper(word) /= 'DISPLACEMENT_CONTROL') then

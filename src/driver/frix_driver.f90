@@ -21,7 +21,7 @@ module frix_driver
    use frix_model, only: model_t
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
-                                  restore_state, take_displacement_reference
+                                  restore_state, take_displacement_reference, extrapolate_displacements
    use frix_newton_solver, only: newton_context_t, path_constraint_t, setup_newton
    use frix_augmentation, only: solve_augmented
    use frix_newton_report, only: newton_report_t
@@ -51,6 +51,14 @@ module frix_driver
    end type run_options_t
 
    real(dp), parameter :: growth_factor = 1.5_dp
+
+   !> Where a restarted run resumes inside a step: the increment control stored with the
+   !> increment it starts from (zero: none stored, the step's nominal values apply).
+   type :: resume_t
+      integer :: increment = 0             !! converged increments of the step already done
+      real(dp) :: increment_size = 0.0_dp  !! the next increment's size [pseudo time]
+      real(dp) :: path_increment = 0.0_dp  !! CONTROL Path: driven displacement per nominal increment
+   end type resume_t
 
    !> The increment control of one step (see the module head).
    type :: step_control_t
@@ -118,7 +126,8 @@ contains
       type(analysis_state_t) :: state
       type(newton_context_t) :: context
       type(results_output_t) :: output
-      integer :: step, first_step, first_increment
+      integer :: step, first_step
+      type(resume_t) :: resume
 
       call create_analysis_state(model, state, error)
       if (allocated(error)) return
@@ -129,9 +138,8 @@ contains
       if (allocated(error)) return
       context%quiet = options%quiet
       first_step = 1
-      first_increment = 0
       if (allocated(options%restart_path)) then
-         call restart_state(model, options, results_base(options), state, first_step, first_increment, error)
+         call restart_state(model, options, results_base(options), state, first_step, resume, error)
          if (allocated(error)) return
       end if
       call output%open(model, results_base(options), error)
@@ -139,8 +147,8 @@ contains
       if (.not. options%quiet) call print_banner(model, context)
 
       do step = first_step, size(model%steps)
-         call run_step(model, step, merge(first_increment, 0, step == first_step), context, state, &
-                       output, options%quiet, error)
+         if (step /= first_step) resume = resume_t()
+         call run_step(model, step, resume, context, state, output, options%quiet, error)
          if (allocated(error)) exit
       end do
       call output%close(error)
@@ -210,10 +218,10 @@ contains
    end function peak_resident_megabytes
 
    !> March through step `step`, cutting back failed increments.
-   subroutine run_step(model, step, first_increment, context, state, output, quiet, error)
+   subroutine run_step(model, step, resume, context, state, output, quiet, error)
       type(model_t), intent(in) :: model
       integer, intent(in) :: step
-      integer, intent(in) :: first_increment  !! increments of this step already done (restart)
+      type(resume_t), intent(in) :: resume   !! a restart inside this step: where it resumes
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       type(results_output_t), intent(inout) :: output
@@ -226,8 +234,8 @@ contains
       character(len=:), allocatable :: attempted
       logical :: repeat
 
-      call begin_step(model, step, first_increment, state, control)
-      if (model%steps(step)%reset_displacement .and. first_increment == 0) then
+      call begin_step(model, step, resume, state, control)
+      if (model%steps(step)%reset_displacement .and. resume%increment == 0) then
          call reset_displacements(step, state, output, quiet, error)
          if (allocated(error)) return
       end if
@@ -247,12 +255,13 @@ contains
          end if
          if (repeat) cycle
          if (report%converged) then
+            ! the next increment's size, stored with this one for a restart
+            if (control%size_now < control%nominal .and. iterations <= control%max_iterations/3) &
+               control%size_now = min(control%nominal, growth_factor*control%size_now)
             call accept_increment(model, control, context, state, report, output, error)
             if (allocated(error)) return
             if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
                                                        wall_clock_seconds() - increment_start, iterations)
-            if (control%size_now < control%nominal .and. iterations <= control%max_iterations/3) &
-               control%size_now = min(control%nominal, growth_factor*control%size_now)
          else
             call cut_back(model, control, state, report, attempted, output, quiet, error)
             if (allocated(error)) return
@@ -281,10 +290,12 @@ contains
       call output%write_note(note, error)
    end subroutine reset_displacements
 
-   !> The increment control of `step` at its start (see the module head).
-   subroutine begin_step(model, step, first_increment, state, control)
+   !> The increment control of `step` at its start (see the module head), or where a restart
+   !> resumes it.
+   subroutine begin_step(model, step, resume, state, control)
       type(model_t), intent(in) :: model
-      integer, intent(in) :: step, first_increment
+      integer, intent(in) :: step
+      type(resume_t), intent(in) :: resume
       type(analysis_state_t), intent(in) :: state
       type(step_control_t), intent(out) :: control
       control%step = step
@@ -293,8 +304,9 @@ contains
       control%max_iterations = model%steps(step)%max_iterations
       if (control%max_iterations <= 0) control%max_iterations = model%controls%max_iterations
       control%size_now = control%nominal
+      if (resume%increment_size > 0.0_dp) control%size_now = resume%increment_size
       control%smallest = control%nominal*0.5_dp**model%controls%max_cutbacks
-      control%increment = first_increment
+      control%increment = resume%increment
       control%path_control = model%steps(step)%control == 'PATH'
       if (.not. control%path_control) return
       control%path%equation = 3*(model%steps(step)%path_node - 1) + model%steps(step)%path_component
@@ -302,6 +314,7 @@ contains
       control%path%step_end = control%step_end
       control%path_increment = (model%steps(step)%path_target - state%committed_u(control%path%equation))/ &
                                model%steps(step)%n_increments
+      if (resume%path_increment /= 0.0_dp) control%path_increment = resume%path_increment
       control%landing_path = control%path
       control%landing_path%equation = 0   ! load control at the step's end, with the step's loads
    end subroutine begin_step
@@ -376,6 +389,8 @@ contains
       call commit_state(state)
       call collect_results(model, control%step, control%increment, state, context, report, results, error)
       if (allocated(error)) return
+      results%increment_size = control%size_now
+      results%path_increment = control%path_increment
       call output%write_increment(model, results, error)
    end subroutine accept_increment
 
@@ -434,6 +449,7 @@ contains
       integer :: k, stage_iterations
       character(len=16) :: factor_text
 
+      if (model%controls%extrapolate .and. .not. present(path)) call extrapolate_displacements(state, time)
       call solve_augmented(model, context, state, time, max_iterations, label, report, iterations, error, path)
       if (allocated(error) .or. report%converged .or. report%interrupted) return
       if (.not. allocated(model%controls%friction_continuation)) return
@@ -475,12 +491,13 @@ contains
    !> Load the state of converged increment (restart_step, restart_increment) from the HDF5
    !> file of an earlier run of the same model, and say where the run continues: the step
    !> holding that increment (or the next step if the increment ended its step).
-   subroutine restart_state(model, options, base, state, first_step, first_increment, error)
+   subroutine restart_state(model, options, base, state, first_step, resume, error)
       type(model_t), intent(in) :: model
       type(run_options_t), intent(in) :: options
       character(len=*), intent(in) :: base
       type(analysis_state_t), intent(inout) :: state
-      integer, intent(out) :: first_step, first_increment
+      integer, intent(out) :: first_step
+      type(resume_t), intent(out) :: resume
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: time
       if (model%results%hdf5 .and. same_file(options%restart_path, base//'.h5')) then
@@ -495,16 +512,16 @@ contains
          return
       end if
       call read_state_restart(model, options%restart_path, options%restart_step, options%restart_increment, &
-                              state, time, error)
+                              state, time, resume%increment_size, resume%path_increment, error)
       if (allocated(error)) then
          error%message = 'frix: restart from '//options%restart_path//': '//error%message
          return
       end if
       first_step = options%restart_step
-      first_increment = options%restart_increment
+      resume%increment = options%restart_increment
       if (abs(time - real(first_step, dp)) < 1.0e-12_dp) then
          first_step = first_step + 1
-         first_increment = 0
+         resume = resume_t()
       end if
       if (.not. options%quiet) write (*, '(a)') 'frix: restarting from '//options%restart_path// &
          ', step '//to_string(options%restart_step)//' increment '//to_string(options%restart_increment)// &

@@ -87,6 +87,8 @@ contains
       if (allocated(error)) return
       results%alpha = state%committed_alpha
       results%history = state%committed_history
+      results%displacement_rate = reshape(state%rate, [3, model%mesh%n_nodes])
+      results%rate_start = state%rate_start
       call collect_history_fields(model, state, results)
    end subroutine collect_fields
 

@@ -274,6 +274,11 @@ contains
                                                 results%contact(p)%penalty_scale)
          end do
       end if
+      call self%hdf5%add_control_array('increment_size', reshape([results%increment_size], [1, 1]))
+      call self%hdf5%add_control_array('path_increment', reshape([results%path_increment], [1, 1]))
+      call self%hdf5%add_control_array('rate_start', reshape([results%rate_start], [1, 1]))
+      if (allocated(results%displacement_rate)) &
+         call self%hdf5%add_control_array('displacement_rate', results%displacement_rate)
       do f = 1, size(results%point_fields)
          call self%hdf5%add_point_field(to_lower(results%point_fields(f)%name), results%point_fields(f)%values)
       end do

@@ -4,6 +4,10 @@
 !> contact pass (`contact/pass<p>_history`) with the multipliers and penalty factors of
 !> augmented passes (`contact/pass<p>_multiplier`, `_penalty_scale`, `_multiplier_rate` with
 !> PREDICT, `_tangential_multiplier` with augmented friction).
+!> The increment control (`control/`: the next increment's size, the driven displacement per
+!> increment of a CONTROL Path step, the last increment's displacement rate) makes the
+!> continuation exact after cut-backs, under path control and with EXTRAPOLATION Linear; a
+!> file without it (written before frix kept it) restarts with the step's nominal increments.
 !> What is read here is what frix_results_collection puts into every increment's results.
 module frix_state_restart
    use frix_kinds, only: dp
@@ -22,13 +26,16 @@ module frix_state_restart
 contains
 
    !> `state` committed at converged increment (step, increment) of the file at `path`, whose
-   !> pseudo time is returned in `time`.
-   subroutine read_state_restart(model, path, step, increment, state, time, error)
+   !> pseudo time is returned in `time`, with the increment control stored with it
+   !> (`increment_size` and `path_increment` zero when the file has none).
+   subroutine read_state_restart(model, path, step, increment, state, time, increment_size, path_increment, error)
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: path
       integer, intent(in) :: step, increment
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(out) :: time
+      real(dp), intent(out) :: increment_size   !! the next increment's size [pseudo time]
+      real(dp), intent(out) :: path_increment   !! CONTROL Path: driven displacement per increment
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: values(:, :)
       type(augmentation_t) :: settings
@@ -39,6 +46,8 @@ contains
       if (allocated(error)) return
       state%time = time
       call commit_solution(state)
+      call read_increment_control(model, path, step, increment, state, increment_size, path_increment, error)
+      if (allocated(error)) return
       if (.not. state%has_contact) return
       do p = 1, size(state%contact%passes)
          call get_contact_history(state%contact, p, values)   ! for the shape
@@ -86,4 +95,40 @@ contains
          if (allocated(error)) error%message = 'contact pass '//to_string(p)//': '//error%message
       end subroutine read_pass_array
    end subroutine read_state_restart
+
+   !> The `control` group of the increment (see the module head); all zero (no rate) when the
+   !> file has none.
+   subroutine read_increment_control(model, path, step, increment, state, increment_size, path_increment, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: step, increment
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(out) :: increment_size, path_increment
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: scalar(1, 1)
+      real(dp), allocatable :: rate(:, :)
+      logical :: found
+      increment_size = 0.0_dp
+      path_increment = 0.0_dp
+      call read_increment_array(path, step, increment, 'control/increment_size', scalar, error, found)
+      if (allocated(error) .or. .not. found) return
+      increment_size = scalar(1, 1)
+      call read_control('path_increment', scalar)
+      if (allocated(error)) return
+      path_increment = scalar(1, 1)
+      call read_control('rate_start', scalar)
+      if (allocated(error)) return
+      allocate (rate(3, model%mesh%n_nodes))
+      call read_control('displacement_rate', rate)
+      if (allocated(error)) return
+      state%rate_start = scalar(1, 1)
+      state%rate = reshape(rate, [size(state%rate)])
+   contains
+      subroutine read_control(name, values)
+         character(len=*), intent(in) :: name
+         real(dp), intent(inout) :: values(:, :)
+         call read_increment_array(path, step, increment, 'control/'//name, values, error)
+         if (allocated(error)) error%message = 'increment control: '//error%message
+      end subroutine read_control
+   end subroutine read_increment_control
 end module frix_state_restart

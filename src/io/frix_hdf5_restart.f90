@@ -248,20 +248,30 @@ contains
    !> Read a real 2-D dataset `name` of increment (step, increment), e.g. 'reaction' or
    !> 'contact/gap_traction' (for restoring contact state). `values` comes sized with the
    !> expected Fortran shape; a 1-D dataset (n) is read into values(1, n).
-   subroutine read_increment_array(path, step, increment, name, values, error)
+   subroutine read_increment_array(path, step, increment, name, values, error, found)
       character(len=*), intent(in) :: path
       integer, intent(in) :: step, increment
       character(len=*), intent(in) :: name       !! path relative to the increment group
       real(dp), intent(inout) :: values(:, :)
       type(error_t), allocatable, intent(out) :: error
+      !> present: a missing dataset (a file of an older frix) is no error; `found` says whether
+      !> `values` was read
+      logical, intent(out), optional :: found
       type(hdf5_location_t) :: file, group
       integer, allocatable :: stored_shape(:)
       real(dp), allocatable :: flat(:)
       real(dp) :: time
+      logical :: exists
+      if (present(found)) found = .false.
       call open_for_reading(path, file, error)
       if (allocated(error)) return
       call open_increment(file, step, increment, group, time, error)
-      if (.not. allocated(error)) then
+      exists = .true.
+      if (.not. allocated(error) .and. present(found)) call path_exists(group, name, exists, error)
+      if (.not. allocated(error) .and. .not. exists) then
+         call close_group_after(group, error)
+      else if (.not. allocated(error)) then
+         if (present(found)) found = .true.
          call dataset_shape(group, name, stored_shape, error)
          if (.not. allocated(error)) then
             if (size(stored_shape) == 1 .and. size(values, 1) == 1) then
@@ -276,4 +286,22 @@ contains
       end if
       call close_file(file, error)
    end subroutine read_increment_array
+
+   !> Whether every link of the relative path `name` ('a/b/c') exists below `group`.
+   subroutine path_exists(group, name, exists, error)
+      type(hdf5_location_t), intent(in) :: group
+      character(len=*), intent(in) :: name
+      logical, intent(out) :: exists
+      type(error_t), allocatable, intent(out) :: error
+      integer :: start, k
+      start = 1
+      do
+         k = index(name(start:), '/')
+         if (k == 0) exit
+         call link_exists(group, name(:start + k - 2), exists, error)
+         if (allocated(error) .or. .not. exists) return
+         start = start + k
+      end do
+      call link_exists(group, name, exists, error)
+   end subroutine path_exists
 end module frix_hdf5_restart

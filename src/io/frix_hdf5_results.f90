@@ -59,12 +59,14 @@ module frix_hdf5_results
       integer :: n_increments = 0                 !! increment groups written so far
       type(named_array_t), allocatable :: contact(:)
       type(named_array_t), allocatable :: fields(:)   !! named integration-point fields
+      type(named_array_t), allocatable :: control(:)  !! the increment control, for restarts
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
       procedure :: close => results_close
       procedure :: n_written => results_n_written
       procedure :: add_point_field
+      procedure :: add_control_array
       procedure, private :: add_contact_real_1, add_contact_real_2, add_contact_integer_1
       generic :: add_contact_array => add_contact_real_1, add_contact_real_2, add_contact_integer_1
    end type hdf5_results_t
@@ -98,7 +100,8 @@ contains
       self%n_increments = 0
       if (allocated(self%contact)) deallocate (self%contact)
       if (allocated(self%fields)) deallocate (self%fields)
-      allocate (self%contact(0), self%fields(0))
+      if (allocated(self%control)) deallocate (self%control)
+      allocate (self%contact(0), self%fields(0), self%control(0))
 
       call write_header(self%file, mesh, title, deck_path, version, error)
       if (.not. allocated(error)) call flush_file(self%file, error)
@@ -278,6 +281,20 @@ contains
       call append_item(self%fields, item)
    end subroutine add_point_field
 
+   !> Add a real array values(n_components, n) of the increment control (a restart's increment
+   !> size, displacement rate) to the `control` group of the next increment; h5py shape
+   !> (n, n_components), or (n) for one component.
+   subroutine add_control_array(self, name, values)
+      class(hdf5_results_t), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      type(named_array_t) :: item
+      item%name = name
+      item%reals = values
+      item%rank_one = size(values, 1) == 1
+      call append_item(self%control, item)
+   end subroutine add_control_array
+
    subroutine append_contact(self, item)
       type(hdf5_results_t), intent(inout) :: self
       type(named_array_t), intent(inout) :: item
@@ -355,8 +372,8 @@ contains
       call close_group_after(increments, error)
       if (allocated(error)) return
       self%n_increments = self%n_increments + 1
-      deallocate (self%contact, self%fields)
-      allocate (self%contact(0), self%fields(0))
+      deallocate (self%contact, self%fields, self%control)
+      allocate (self%contact(0), self%fields(0), self%control(0))
       call flush_file(self%file, error)
    end subroutine results_write_increment
 
@@ -428,6 +445,8 @@ contains
       call write_named_arrays(group, 'contact', self%contact, error)
       if (allocated(error)) return
       call write_named_arrays(group, 'fields', self%fields, error)
+      if (allocated(error)) return
+      call write_named_arrays(group, 'control', self%control, error)
       if (allocated(error)) return
       ! written last: readers ignore a group without it (a run stopped while writing it)
       call write_attribute(group, 'complete', 1, error)

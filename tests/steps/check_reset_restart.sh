@@ -21,7 +21,11 @@ import sys, h5py, numpy as np
 out, name, froms = sys.argv[1], sys.argv[2], sys.argv[3:]
 def increments(path):
     with h5py.File(path, "r") as f:
-        return {(int(g.attrs["step"]), int(g.attrs["increment"])): {k: g[k][...] for k in g}
+        def datasets(g):   # every dataset of the increment, its subgroups' included
+            found = {}
+            g.visititems(lambda k, v: found.__setitem__(k, v[...]) if isinstance(v, h5py.Dataset) else None)
+            return found
+        return {(int(g.attrs["step"]), int(g.attrs["increment"])): datasets(g)
                 for g in f["increments"].values()}
 def history(path):
     rows = open(path).read().splitlines()
