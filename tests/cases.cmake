@@ -120,6 +120,11 @@ set_tests_properties(restart_cutback PROPERTIES LABELS regression)
 add_test(NAME restart_path COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_path.dck 1.5 1.12)
 set_tests_properties(restart_path PROPERTIES LABELS regression)
+# Damaged restart files (NaN time or values, a time outside its step, integer displacements,
+# an increment not marked complete) are refused with exit 1 and a message naming the damage.
+add_test(NAME restart_validation COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_validation_test.sh
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1_augmented.dck)
+set_tests_properties(restart_validation PROPERTIES LABELS "regression;contact")
 
 # Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
 foreach(script plot_history plot_line render_mesh mohr_coulomb compare_runs)

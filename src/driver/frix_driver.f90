@@ -517,6 +517,14 @@ contains
          error%message = 'frix: restart from '//options%restart_path//': '//error%message
          return
       end if
+      ! step s spans the pseudo times (s - 1, s]
+      if (.not. (time > real(options%restart_step - 1, dp) .and. &
+                 time <= real(options%restart_step, dp) + 1.0e-12_dp)) then
+         call fatal_error(error, 'frix: restart from '//options%restart_path//': increment '// &
+                          to_string(options%restart_increment)//' of step '//to_string(options%restart_step)// &
+                          ' has the time '//time_text(time)//', outside the step')
+         return
+      end if
       first_step = options%restart_step
       resume%increment = options%restart_increment
       if (abs(time - real(first_step, dp)) < 1.0e-12_dp) then

@@ -4,7 +4,9 @@
 !> history), checked against the current
 !> model's array shapes and mesh, and any real array of an increment (e.g. the contact state).
 !> An increment group without the `complete` attribute (a run stopped while writing it) is
-!> ignored.
+!> ignored; one whose `complete` is not 1 too. What a restart reads is validated: the
+!> increment's time finite, real datasets stored as floating point, every value finite; an
+!> error names the file, the increment and the dataset.
 module frix_hdf5_restart
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -13,6 +15,7 @@ module frix_hdf5_restart
    use frix_hdf5_support, only: hdf5_location_t, open_group, close_group_after, link_exists, read_dataset, &
                                 dataset_shape, read_attribute, attribute_exists
    use frix_hdf5_file, only: increment_group_name, open_for_reading, close_file
+   use frix_finite_check, only: first_non_finite
    implicit none
    private
 
@@ -28,7 +31,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(hdf5_location_t) :: increments_group, group
       logical :: exists, complete
-      integer :: k, step, increment
+      integer :: k, step, increment, complete_value
       real(dp) :: time
 
       allocate (numbers(0), steps(0), increments(0), times(0))
@@ -42,6 +45,10 @@ contains
          call open_group(increments_group, increment_group_name(k), group, error)
          if (allocated(error)) exit
          call attribute_exists(group, 'complete', complete, error)
+         if (complete .and. .not. allocated(error)) then
+            call read_attribute(group, 'complete', complete_value, error)
+            complete = complete_value == 1
+         end if
          if (complete .and. .not. allocated(error)) then
             call read_attribute(group, 'step', step, error)
             if (.not. allocated(error)) call read_attribute(group, 'increment', increment, error)
@@ -99,8 +106,28 @@ contains
          return
       end if
       time = times(found)
+      if (first_non_finite([time]) /= 0) then
+         call fatal_error(error, 'HDF5: results file "'//file%file_path//'": increment '//to_string(increment)// &
+                          ' of step '//to_string(step)//' has the non-finite time '//to_string(time))
+         return
+      end if
       call open_group(file, 'increments/'//increment_group_name(numbers(found)), group, error)
    end subroutine open_increment
+
+   !> Error unless every entry of dataset `name` (just read into `values`) is finite.
+   subroutine check_finite(file, step, increment, name, values, error)
+      type(hdf5_location_t), intent(in) :: file
+      integer, intent(in) :: step, increment
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: position
+      position = first_non_finite(values)
+      if (position == 0) return
+      call fatal_error(error, 'HDF5: results file "'//file%file_path//'": dataset "'//name//'" of increment '// &
+                       to_string(increment)//' of step '//to_string(step)//' has the non-finite value '// &
+                       to_string(values(position))//' at entry '//to_string(position))
+   end subroutine check_finite
 
    !> " step/increment step/increment ..." of the first increments, "none" without any.
    pure function available_text(steps, increments) result(available)
@@ -186,6 +213,15 @@ contains
       if (.not. allocated(error)) call read_dataset(group, 'alpha', new_alpha, error)
       if (.not. allocated(error)) call read_dataset(group, 'history', new_history, error)
       call close_group_after(group, error)
+      if (allocated(error)) return
+      call check_finite(file, selector_step, selector_increment, 'displacement', reshape(new_u, [size(new_u)]), error)
+      if (.not. allocated(error)) call check_finite(file, selector_step, selector_increment, 'alpha', &
+                                                    reshape(new_alpha, [size(new_alpha)]), error)
+      if (.not. allocated(error)) call check_finite(file, selector_step, selector_increment, 'history', &
+                                                    reshape(new_history, [size(new_history)]), error)
+      if (.not. allocated(error) .and. has_reference) &
+         call check_finite(file, selector_step, selector_increment, 'reference_displacement', &
+                           reshape(new_reference, [size(new_reference)]), error)
       if (allocated(error)) return
       time = new_time
       u = reshape(new_u, [size(u)])
@@ -282,6 +318,7 @@ contains
                call read_dataset(group, name, values, error)
             end if
          end if
+         if (.not. allocated(error)) call check_finite(file, step, increment, name, reshape(values, [size(values)]), error)
          call close_group_after(group, error)
       end if
       call close_file(file, error)

@@ -21,7 +21,8 @@ module frix_hdf5_support
                    h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, h5dget_space_f, &
                    h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, h5aexists_f, &
                    h5tcopy_f, h5tset_size_f, h5tset_strpad_f, h5tclose_f, h5t_str_nullterm_f, &
-                   h5t_native_double, h5t_native_integer, h5t_native_character
+                   h5t_native_double, h5t_native_integer, h5t_native_character, &
+                   h5dget_type_f, h5tget_class_f, h5t_integer_f, h5t_float_f
    implicit none
    private
 
@@ -317,6 +318,7 @@ contains
          return
       end if
       call check_read_shape(parent, name, dataset, expected, error)
+      if (.not. allocated(error)) call check_read_type(parent, name, dataset, type_id, error)
       if (.not. allocated(error)) &
          call read_open_dataset(dataset, type_id, int(product(expected), c_size_t)*element_bytes, values, status)
       call h5dclose_f(dataset, close_status)
@@ -324,6 +326,45 @@ contains
       if (status == 0) status = close_status
       if (status /= 0) call hdf5_failure(error, 'read dataset', parent, name)
    end subroutine read_raw
+
+   !> Error unless the open dataset `name` stores values of the class (floating point or
+   !> integer) of the memory type `type_id`: HDF5 would convert an integer dataset into reals
+   !> silently, which a restart must not accept.
+   subroutine check_read_type(parent, name, dataset, type_id, error)
+      type(hdf5_location_t), intent(in) :: parent
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: dataset, type_id
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: stored_type
+      integer :: stored_class, wanted_class, status, close_status
+      call h5dget_type_f(dataset, stored_type, status)
+      if (status /= 0) then
+         call hdf5_failure(error, 'query the type of dataset', parent, name)
+         return
+      end if
+      call h5tget_class_f(stored_type, stored_class, status)
+      call h5tclose_f(stored_type, close_status)
+      if (status == 0) call h5tget_class_f(type_id, wanted_class, status)
+      if (status /= 0 .or. close_status /= 0) then
+         call hdf5_failure(error, 'query the type of dataset', parent, name)
+      else if (stored_class /= wanted_class) then
+         call fatal_error(error, 'HDF5: dataset "'//name//'" in "'//parent%file_path//'" holds '// &
+                          class_text(stored_class)//' values, expected '//class_text(wanted_class))
+      end if
+   end subroutine check_read_type
+
+   !> "integer", "floating-point" or "other" for an HDF5 type class.
+   pure function class_text(type_class) result(text)
+      integer, intent(in) :: type_class
+      character(len=:), allocatable :: text
+      if (type_class == h5t_integer_f) then
+         text = 'integer'
+      else if (type_class == h5t_float_f) then
+         text = 'floating-point'
+      else
+         text = 'other (neither integer nor floating-point)'
+      end if
+   end function class_text
 
    !> Error unless the open dataset `name` has the Fortran shape `expected`.
    subroutine check_read_shape(parent, name, dataset, expected, error)
