@@ -162,3 +162,26 @@ set_tests_properties(restart_contact PROPERTIES LABELS "regression;contact")
 add_test(NAME restart_contact_augmented COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_contact_test.sh
          ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1_augmented.dck)
 set_tests_properties(restart_contact_augmented PROPERTIES LABELS "regression;contact")
+
+# Write failures (docs/output.md, "When a write fails"): tests/io/fail_writes.c, preloaded,
+# makes the writes into one result file fail with ENOSPC as on a full disk; the run must end
+# with exit status 1 and a message naming the file, the increments before it readable.
+add_library(frix_fail_writes SHARED ${CMAKE_CURRENT_SOURCE_DIR}/io/fail_writes.c)
+target_link_libraries(frix_fail_writes PRIVATE ${CMAKE_DL_LIBS})
+set(FRIX_FAIL_WRITES $<TARGET_FILE:frix_fail_writes>)
+foreach(case hdf5 hdf5_device listing listing_hdf5 history contact vtu pvd pos)
+  add_test(NAME io_write_failure_${case}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/io/write_failure_test.sh ${FRIX_BIN} ${FRIX_FAIL_WRITES}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/io/write_failure.dck ${case})
+  set_tests_properties(io_write_failure_${case} PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+endforeach()
+# A run killed while it writes the HDF5 file's mesh leaves a file that h5py opens.
+add_test(NAME hdf5_kill_during_header
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/kill_test.sh ${FRIX_BIN} ${FRIX_FAIL_WRITES}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/io/write_failure.dck)
+set_tests_properties(hdf5_kill_during_header PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# A real full disk (a small tmpfs; root only, else skipped) under a run with HDF5 on.
+add_test(NAME hdf5_disk_full
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/disk_full_test.sh ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/io/write_failure.dck)
+set_tests_properties(hdf5_disk_full PROPERTIES LABELS regression SKIP_RETURN_CODE 77 TIMEOUT ${scaled_60})

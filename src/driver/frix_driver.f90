@@ -34,6 +34,7 @@ module frix_driver
    use frix_support_check, only: check_rigid_body_support
    use frix_state_restart, only: read_state_restart
    use frix_mesh, only: hex8_face_nodes
+   use frix_hdf5_file, only: hdf5_finalize
    use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
    private
@@ -93,6 +94,7 @@ contains
          return
       end if
       call run_analysis(model, options, start, error)
+      call hdf5_finalize()
    end subroutine run_deck
 
    !> The analysis of a model read from a deck: setup, the steps, the results.
@@ -143,7 +145,10 @@ contains
          if (allocated(error)) return
       end if
       call output%open(model, results_base(options), error)
-      if (allocated(error)) return
+      if (allocated(error)) then
+         call output%close(error)   ! the files opened before the failure
+         return
+      end if
       if (.not. options%quiet) call print_banner(model, context)
 
       do step = first_step, size(model%steps)
@@ -151,7 +156,8 @@ contains
          call run_step(model, step, resume, context, state, output, options%quiet, error)
          if (allocated(error)) exit
       end do
-      call output%close(error)
+      call output%close(error)   ! every file, also after a failure: an error keeps the first
+      if (allocated(error)) return
       if (.not. options%quiet) then
          write (*, '(a)') 'frix: '//to_string(output%n_increments)// &
             ' converged increments; results in '//results_base(options)//'*'

@@ -15,6 +15,7 @@ module frix_results_output
    use frix_history_writer, only: history_t
    use frix_pos3d_writer, only: pos3d_writer_t
    use frix_hdf5_results, only: hdf5_results_t
+   use frix_text_output, only: text_file_t
    use frix_strings, only: to_string, to_lower, to_upper
    use frix_contact_assembly, only: contact_table_labels
    implicit none
@@ -30,9 +31,8 @@ module frix_results_output
       type(pos3d_writer_t) :: pos3d
       type(hdf5_results_t) :: hdf5
       logical :: hdf5_open = .false.
-      logical :: has_history = .false.
       logical :: pos3d_open = .false.
-      integer :: contact_unit = -1        !! <base>_contact.csv
+      type(text_file_t) :: contact_csv    !! <base>_contact.csv
    contains
       procedure :: open => output_open
       procedure :: write_increment => output_write_increment
@@ -89,7 +89,6 @@ contains
                                         i=1, size(requests))], error)
             end associate
             if (allocated(error)) return
-            self%has_history = .true.
          end if
       end if
    end subroutine output_open
@@ -120,7 +119,7 @@ contains
       type(increment_results_t), intent(in) :: results
       type(error_t), allocatable, intent(out) :: error
       self%n_increments = self%n_increments + 1
-      if (self%has_history) then
+      if (self%history%is_open()) then
          call self%history%append(results%step, results%increment, results%time, results%displacement, &
                                   results%reaction, error)
          if (allocated(error)) return
@@ -342,8 +341,7 @@ contains
       end do
       call self%pos3d%open(base//'.pos', model%title, model%mesh, error, elastic, &
                            model%blocks(model%mesh%element_block)%material)
-      if (allocated(error)) return
-      self%pos3d_open = .true.
+      self%pos3d_open = .true.   ! also after a failure: the close removes the body file
    end subroutine open_pos3d
 
    !> `<base>_contact.csv`: one row per slave node and converged increment.
@@ -351,17 +349,11 @@ contains
       class(results_output_t), intent(inout) :: self
       character(len=*), intent(in) :: base
       type(error_t), allocatable, intent(out) :: error
-      integer :: stat
-      open (newunit=self%contact_unit, file=base//'_contact.csv', status='replace', action='write', &
-            iostat=stat)
-      if (stat /= 0) then
-         self%contact_unit = -1
-         call fatal_error(error, 'frix: cannot open '//base//'_contact.csv')
-         return
-      end if
-      write (self%contact_unit, '(a)') 'step,increment,time,pair,pass,node,x,y,z,gap,pressure,'// &
-         'traction_x,traction_y,traction_z,slip,status,normal_x,normal_y,normal_z'
-      flush (self%contact_unit)   ! a run killed before its first increment leaves the header
+      call self%contact_csv%open(base//'_contact.csv', 'contact CSV file "'//base//'_contact.csv"', error)
+      if (allocated(error)) return
+      call self%contact_csv%put('step,increment,time,pair,pass,node,x,y,z,gap,pressure,'// &
+                                'traction_x,traction_y,traction_z,slip,status,normal_x,normal_y,normal_z')
+      call self%contact_csv%flush(error)   ! a run killed before its first increment leaves the header
    end subroutine open_contact_csv
 
    !> One contact CSV row: step, increment, time, pair, pass, node, x y z, gap, pressure,
@@ -374,23 +366,20 @@ contains
       character(len=*), parameter :: contact_row_format = &
                                      '(i0,",",i0,",",es24.16e3,",",i0,",",i0,",",i0,9(",",es24.16e3),",",i0,'// &
                                      '3(",",es24.16e3))'
-      integer :: p, i, stat, node
+      character(len=512) :: row
+      integer :: p, i, node
       do p = 1, size(results%contact)
          associate (table => results%contact(p))
             do i = 1, size(table%nodes)
                node = table%nodes(i)
-               write (self%contact_unit, contact_row_format, iostat=stat) results%step, results%increment, &
-                  results%time, table%pair_id, p, &
+               write (row, contact_row_format) results%step, results%increment, results%time, table%pair_id, p, &
                   model%mesh%node_ids(node), model%mesh%coords(:, node) + results%total_displacement(:, node), &
                   table%values(1:6, i), nint(table%values(7, i)), table%values(8:10, i)
-               if (stat /= 0) then
-                  call fatal_error(error, 'frix: cannot write the contact CSV file')
-                  return
-               end if
+               call self%contact_csv%put(trim(row))
             end do
          end associate
       end do
-      flush (self%contact_unit)
+      call self%contact_csv%flush(error)
    end subroutine write_contact_csv
 
    !> A note in the listing (a `#` comment line between increments), e.g. where the reported
@@ -402,15 +391,30 @@ contains
       if (self%listing%is_open()) call self%listing%write_comment(text, error)
    end subroutine output_write_note
 
+   !> Close every file that is open, also after a failure (`error` allocated on entry, which it
+   !> keeps); otherwise `error` is the first failure of a close.
    subroutine output_close(self, error)
       class(results_output_t), intent(inout) :: self
       type(error_t), allocatable, intent(inout) :: error
       type(error_t), allocatable :: close_error
-      if (self%listing%is_open()) call self%listing%close(close_error)
-      if (self%has_history) call self%history%close(close_error)
+      call self%listing%close(close_error)
+      call keep_first(close_error, error)
+      call self%history%close(close_error)
+      call keep_first(close_error, error)
+      call self%contact_csv%close(close_error)
+      call keep_first(close_error, error)
       if (self%pos3d_open) call self%pos3d%close(close_error)
+      self%pos3d_open = .false.
+      call keep_first(close_error, error)
       if (self%hdf5_open) call self%hdf5%close(close_error)
-      if (self%contact_unit /= -1) close (self%contact_unit)
-      if (allocated(close_error) .and. .not. allocated(error)) call move_alloc(close_error, error)
+      self%hdf5_open = .false.
+      call keep_first(close_error, error)
    end subroutine output_close
+
+   !> `error` = `new` unless `error` already holds an earlier failure; `new` is deallocated.
+   subroutine keep_first(new, error)
+      type(error_t), allocatable, intent(inout) :: new, error
+      if (.not. allocated(error) .and. allocated(new)) call move_alloc(new, error)
+      if (allocated(new)) deallocate (new)
+   end subroutine keep_first
 end module frix_results_output

@@ -3,19 +3,30 @@
 !> flushing and closing it with checked HDF5 1.10 calls, the layout version, and the names of
 !> the increment groups (/increments/000001, 000002, ...).
 module frix_hdf5_file
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_long_long, c_null_char
    use frix_error, only: error_t, fatal_error
+   use frix_text_output, only: system_reason
    use frix_strings, only: zero_padded
-   use frix_hdf5_support, only: hdf5_location_t, hdf5_initialize
+   use frix_hdf5_support, only: hdf5_location_t, hdf5_initialize, hdf5_finalize, note_failed_close
    use hdf5, only: h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5fis_hdf5_f, &
                    h5f_acc_trunc_f, h5f_acc_rdonly_f, h5f_scope_global_f
    implicit none
    private
 
    public :: hdf5_layout_version, increment_group_name
-   public :: create_file, open_for_reading, flush_file, close_file
+   public :: create_file, open_for_reading, flush_file, close_file, hdf5_finalize, check_room
 
    integer, parameter :: hdf5_layout_version = 1   !! root attribute `layout_version`; bump on incompatible change
    integer, parameter :: increment_digits = 6       !! increment group names: 000001, 000002, ...
+
+   interface
+      !> 0 when the file at `path` can grow by `bytes`, else the errno (frix_disk_space.c).
+      integer(c_int) function c_room_to_grow(path, bytes) bind(c, name='frix_room_to_grow')
+         import :: c_int, c_char, c_long_long
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_long_long), value :: bytes
+      end function c_room_to_grow
+   end interface
 
 contains
 
@@ -26,7 +37,10 @@ contains
       name = zero_padded(number, increment_digits)
    end function increment_group_name
 
-   !> Create (or truncate) the results file `path`.
+   !> Create (or truncate) the results file `path` and flush it at once: from then on a run
+   !> killed at any point leaves a file that opens (HDF5 keeps the superblock and the root
+   !> group in its cache until a flush; killed before, the file held the superblock only,
+   !> "truncated file: eof = 96, stored_eof = 2048").
    subroutine create_file(path, file, error)
       character(len=*), intent(in) :: path
       type(hdf5_location_t), intent(inout) :: file
@@ -36,6 +50,9 @@ contains
       if (allocated(error)) return
       call h5fcreate_f(path, h5f_acc_trunc_f, file%id, status)
       call name_file(path, status, 'create', file, error)
+      if (allocated(error)) return
+      call flush_file(file, error)
+      if (allocated(error)) call close_file(file, error)
    end subroutine create_file
 
    !> Open an existing results file read-only, with distinct messages for a missing file and
@@ -92,6 +109,20 @@ contains
       if (status /= 0) call fatal_error(error, 'HDF5: cannot flush results file "'//file%file_path//'"')
    end subroutine flush_file
 
+   !> The error "cannot write <what> ...: <reason>" unless the file can grow by `bytes`: asked
+   !> before writing, so that a full disk stops the writing before it starts (a file whose
+   !> writes fail half-way is not closed cleanly by HDF5 1.10).
+   subroutine check_room(file, bytes, what, error)
+      type(hdf5_location_t), intent(in) :: file
+      integer(c_long_long), intent(in) :: bytes
+      character(len=*), intent(in) :: what   !! e.g. 'increment 3'
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int) :: status
+      status = c_room_to_grow(file%file_path//c_null_char, bytes)
+      if (status /= 0) call fatal_error(error, 'HDF5: cannot write '//what//' into results file "'// &
+                                        file%file_path//'": '//system_reason(status))
+   end subroutine check_room
+
    !> Close `file` (no-op if it is not open), also after work on it that may have failed:
    !> `error` keeps the work's error if there is one, otherwise it receives the close's.
    subroutine close_file(file, error)
@@ -101,6 +132,7 @@ contains
       if (file%id < 0) return
       call h5fclose_f(file%id, status)
       file%id = -1
+      if (status /= 0) call note_failed_close()
       if (status /= 0 .and. .not. allocated(error)) &
          call fatal_error(error, 'HDF5: cannot close results file "'//file%file_path//'"')
    end subroutine close_file

@@ -27,13 +27,15 @@
 !> and `read_increment_array` are frix_hdf5_restart's, made available here too; creating,
 !> opening, flushing and closing the file are frix_hdf5_file's.
 module frix_hdf5_results
+   use, intrinsic :: iso_c_binding, only: c_long_long
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_hdf5_support, only: hdf5_location_t, create_group, open_group, close_group, close_group_after, &
                                 write_dataset, write_attribute
-   use frix_hdf5_file, only: hdf5_layout_version, increment_group_name, create_file, flush_file, close_file
+   use frix_hdf5_file, only: hdf5_layout_version, increment_group_name, create_file, flush_file, close_file, &
+                             check_room
    use frix_hdf5_restart, only: read_restart, list_increments, read_increment_array
    implicit none
    private
@@ -361,6 +363,9 @@ contains
          end if
       end if
 
+      call check_room(self%file, increment_bytes(self, displacement, stress, alpha, history, present(total)), &
+                      'increment '//to_string(self%n_increments + 1), error)
+      if (allocated(error)) return
       call open_group(self%file, 'increments', increments, error)
       if (allocated(error)) return
       call create_group(increments, increment_group_name(self%n_increments + 1), group, error)
@@ -376,6 +381,36 @@ contains
       allocate (self%contact(0), self%fields(0), self%control(0))
       call flush_file(self%file, error)
    end subroutine results_write_increment
+
+   !> Bytes an increment adds to the file: its arrays and 64 KiB for HDF5's object headers,
+   !> heaps and B-tree nodes (about 1 KiB per dataset).
+   pure function increment_bytes(self, displacement, stress, alpha, history, with_total) result(bytes)
+      type(hdf5_results_t), intent(in) :: self
+      real(dp), intent(in) :: displacement(:, :), stress(:, :, :), alpha(:, :), history(:, :, :)
+      logical, intent(in) :: with_total   !! total and reference displacements written too
+      integer(c_long_long) :: bytes
+      integer(c_long_long), parameter :: metadata = 65536
+      integer :: i
+      bytes = 8_c_long_long*(merge(4, 2, with_total)*size(displacement, kind=c_long_long) + &
+                             2*size(stress, kind=c_long_long) + size(alpha, kind=c_long_long) + &
+                             size(history, kind=c_long_long)) + metadata
+      do i = 1, size(self%contact)
+         bytes = bytes + item_bytes(self%contact(i))
+      end do
+      do i = 1, size(self%fields)
+         bytes = bytes + item_bytes(self%fields(i))
+      end do
+      do i = 1, size(self%control)
+         bytes = bytes + item_bytes(self%control(i))
+      end do
+   end function increment_bytes
+
+   pure integer(c_long_long) function item_bytes(item)
+      type(named_array_t), intent(in) :: item
+      item_bytes = 0
+      if (allocated(item%reals)) item_bytes = 8*size(item%reals, kind=c_long_long)
+      if (allocated(item%integers)) item_bytes = 4*size(item%integers, kind=c_long_long)
+   end function item_bytes
 
    subroutine check_increment_shapes(self, displacement, reaction, stress, strain, alpha, history, error)
       type(hdf5_results_t), intent(in) :: self

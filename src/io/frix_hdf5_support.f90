@@ -14,7 +14,7 @@ module frix_hdf5_support
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
-   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5close_f, h5dont_atexit_f, h5eset_auto_f, &
                    h5gcreate_f, h5gopen_f, h5gclose_f, h5lexists_f, &
                    h5screate_simple_f, h5screate_f, h5sclose_f, h5s_scalar_f, &
                    h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, &
@@ -27,7 +27,7 @@ module frix_hdf5_support
    private
 
    public :: hid_t
-   public :: hdf5_location_t, hdf5_initialize
+   public :: hdf5_location_t, hdf5_initialize, hdf5_finalize, note_failed_close
    public :: create_group, open_group, close_group, close_group_after, link_exists
    public :: write_dataset, read_dataset, dataset_shape
    public :: write_attribute, read_attribute, attribute_exists
@@ -61,21 +61,44 @@ module frix_hdf5_support
       module procedure read_attribute_integer, read_attribute_real
    end interface read_attribute
 
+   logical, save :: library_open = .false.   !! hdf5_initialize has opened the library
+   logical, save :: close_failed = .false.   !! a file's H5Fclose failed (note_failed_close)
+
 contains
 
    !> Initialise the HDF5 Fortran library (predefined types) and switch off HDF5's automatic
    !> printing of its error stack: errors are reported through `error_t` only. Idempotent.
+   !> HDF5's own clean-up at exit is switched off (the library is closed by hdf5_finalize):
+   !> when H5Fclose fails (a full disk), HDF5 1.10 frees the file but keeps its id, and its
+   !> at-exit clean-up closes that id again (use after free, SIGSEGV in H5F__close_cb).
    subroutine hdf5_initialize(error)
       type(error_t), allocatable, intent(out) :: error
       integer :: status
+      if (.not. library_open) call h5dont_atexit_f(status)   ! fails harmlessly once HDF5 is running
       call h5open_f(status)
       if (status /= 0) then
          call fatal_error(error, 'HDF5: cannot initialise the HDF5 library')
          return
       end if
+      library_open = .true.
       call h5eset_auto_f(0, status)
       if (status /= 0) call fatal_error(error, 'HDF5: cannot switch off automatic error printing')
    end subroutine hdf5_initialize
+
+   !> Close the HDF5 library at the end of a run (no-op if it was not opened), unless a file's
+   !> close failed: the library's state then holds a freed file (hdf5_initialize), and it is
+   !> left to the end of the process.
+   subroutine hdf5_finalize()
+      integer :: status
+      if (.not. library_open .or. close_failed) return
+      call h5close_f(status)
+      library_open = .false.
+   end subroutine hdf5_finalize
+
+   !> Record that H5Fclose failed (see hdf5_finalize).
+   subroutine note_failed_close()
+      close_failed = .true.
+   end subroutine note_failed_close
 
    !> Absolute HDF5 path of `name` below `parent`.
    pure function child_path(parent, name) result(path)

@@ -11,6 +11,7 @@ module frix_history_writer
    use frix_error, only: error_t, fatal_error, append_error
    use frix_strings, only: to_string, to_upper
    use frix_mesh, only: mesh_t
+   use frix_text_output, only: text_file_t
    implicit none
    private
 
@@ -23,14 +24,14 @@ module frix_history_writer
 
    type :: history_t
       private
-      integer :: unit = -1
-      character(len=:), allocatable :: path
+      type(text_file_t) :: file
       integer, allocatable :: nodes(:)   !! internal node number of each column
       integer, allocatable :: dofs(:)    !! DOF code 1..6 of each column
    contains
       procedure :: open => history_open
       procedure :: append => history_append
       procedure :: close => history_close
+      procedure :: is_open => history_is_open
    end type history_t
 
 contains
@@ -63,9 +64,8 @@ contains
       integer, intent(in) :: node_ids(:)   !! user node ids
       integer, intent(in) :: dofs(:)       !! DOF codes, same size as node_ids
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: header
-      character(len=256) :: message
-      integer :: i, stat, found(1)
+      character(len=:), allocatable :: header, path
+      integer :: i, found(1)
       if (size(dofs) /= size(node_ids)) then
          call fatal_error(error, 'history: '//to_string(size(node_ids))//' nodes but '//to_string(size(dofs))//' DOFs')
          return
@@ -85,16 +85,11 @@ contains
       do i = 1, size(node_ids)
          header = header//','//history_label(node_ids(i), dofs(i))
       end do
-      self%path = base//'_history.csv'
-      open (newunit=self%unit, file=self%path, status='replace', action='write', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         self%unit = -1
-         call fatal_error(error, 'cannot open history file "'//self%path//'": '//trim(message))
-         return
-      end if
-      write (self%unit, '(a)', iostat=stat) header
-      if (stat == 0) flush (self%unit, iostat=stat)
-      if (stat /= 0) call fatal_error(error, 'cannot write history file "'//self%path//'"')
+      path = base//'_history.csv'
+      call self%file%open(path, 'history file "'//path//'"', error)
+      if (allocated(error)) return
+      call self%file%put(header)
+      call self%file%flush(error)
    end subroutine history_open
 
    !> Append the row of one converged increment and flush it to disk.
@@ -107,8 +102,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: row
       real(dp) :: value
-      integer :: i, stat
-      if (self%unit == -1) then
+      integer :: i
+      if (.not. self%file%is_open()) then
          call fatal_error(error, 'history written before it was opened')
          return
       end if
@@ -121,19 +116,19 @@ contains
          end if
          row = row//','//real_text(value)
       end do
-      write (self%unit, '(a)', iostat=stat) row
-      if (stat == 0) flush (self%unit, iostat=stat)
-      if (stat /= 0) call fatal_error(error, 'cannot write history file "'//self%path//'" (iostat '//to_string(stat)//')')
+      call self%file%put(row)
+      call self%file%flush(error)
    end subroutine history_append
+
+   pure logical function history_is_open(self)
+      class(history_t), intent(in) :: self
+      history_is_open = self%file%is_open()
+   end function history_is_open
 
    subroutine history_close(self, error)
       class(history_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      integer :: stat
-      if (self%unit == -1) return
-      close (self%unit, iostat=stat)
-      self%unit = -1
-      if (stat /= 0) call fatal_error(error, 'cannot close history file "'//self%path//'"')
+      call self%file%close(error)
    end subroutine history_close
 
    pure function real_text(value) result(text)

@@ -14,6 +14,7 @@ module frix_listing_writer
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
+   use frix_text_output, only: text_file_t
    implicit none
    private
 
@@ -23,11 +24,11 @@ module frix_listing_writer
    character(len=*), parameter :: key_format = '(i10)'
    character(len=*), parameter :: value_format = '(es18.9e3)'
 
-   !> An open listing file. Every `write_*` flushes, so a crashed run keeps what it wrote.
+   !> An open listing file. Every `write_*` flushes (and reports a failed write), so a crashed
+   !> run keeps what it wrote.
    type :: listing_t
       private
-      integer :: unit = -1
-      character(len=:), allocatable :: path
+      type(text_file_t) :: file
    contains
       procedure :: open => listing_open
       procedure :: close => listing_close
@@ -50,15 +51,8 @@ contains
       character(len=*), intent(in) :: deck_name   !! deck file as given on the command line
       character(len=*), intent(in) :: version     !! frix version, e.g. '0.1.0'
       type(error_t), allocatable, intent(out) :: error
-      character(len=256) :: message
-      integer :: stat
-      open (newunit=self%unit, file=path, status='replace', action='write', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         self%unit = -1
-         call fatal_error(error, 'cannot open listing "'//path//'": '//trim(message))
-         return
-      end if
-      self%path = path
+      call self%file%open(path, 'listing "'//path//'"', error)
+      if (allocated(error)) return
       call self%write_comment('frix listing, format: docs/listing-format.md', error)
       if (allocated(error)) return
       call self%write_comment('frix version '//version, error)
@@ -68,17 +62,13 @@ contains
 
    pure logical function is_open(self)
       class(listing_t), intent(in) :: self
-      is_open = self%unit /= -1
+      is_open = self%file%is_open()
    end function is_open
 
    subroutine listing_close(self, error)
       class(listing_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      integer :: stat
-      if (self%unit == -1) return
-      close (self%unit, iostat=stat)
-      self%unit = -1
-      if (stat /= 0) call fatal_error(error, 'cannot close listing "'//self%path//'"')
+      call self%file%close(error)
    end subroutine listing_close
 
    !> A comment line '# text' (ignored by compare.sh): dates, paths, timings go here.
@@ -231,17 +221,14 @@ contains
       type(listing_t), intent(inout) :: self
       character(len=*), intent(in) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, stat
-      if (self%unit == -1) then
+      integer :: i
+      if (.not. self%file%is_open()) then
          call fatal_error(error, 'listing written before it was opened')
          return
       end if
-      stat = 0
       do i = 1, size(lines)
-         write (self%unit, '(a)', iostat=stat) trim(lines(i))
-         if (stat /= 0) exit
+         call self%file%put(trim(lines(i)))
       end do
-      if (stat == 0) flush (self%unit, iostat=stat)
-      if (stat /= 0) call fatal_error(error, 'cannot write listing "'//self%path//'" (iostat '//to_string(stat)//')')
+      call self%file%flush(error)
    end subroutine write_lines
 end module frix_listing_writer

@@ -32,13 +32,12 @@
 !> 6 stress components STRESS_XX YY ZZ XY XZ YZ (frix Voigt order, tensor shears).
 !> Reals as es24.16e3 (17 significant digits: binary64 round-trips exactly). Units: the deck's.
 module frix_pos3d_writer
-   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_field_recovery, only: nodal_extrapolated, von_mises_field
-   use frix_text_output, only: real_edit, open_for_writing, put, close_written_file
+   use frix_text_output, only: real_edit, text_file_t
    implicit none
    private
 
@@ -49,15 +48,6 @@ module frix_pos3d_writer
    integer, parameter :: integration_order = 2              !! 2x2x2 Gauss, in the element records
    character(len=*), parameter :: stress_names = &
                                   "'STRESS_XX' 'STRESS_YY' 'STRESS_ZZ' 'STRESS_XY' 'STRESS_XZ' 'STRESS_YZ'"
-
-   interface
-      !> C library rename(3): 0 on success.
-      function c_rename(old_path, new_path) bind(C, name='rename') result(status)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: old_path(*), new_path(*)
-         integer(c_int) :: status
-      end function c_rename
-   end interface
 
    !> A neutral file being written. Usage: `open` (writes the model at once: a bad folder is
    !> reported there), `add_step` per converged increment (the file is complete after each),
@@ -92,7 +82,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), intent(in), optional :: materials(:, :)     !! (2, n_materials): E, nu
       integer, intent(in), optional :: element_material(:)  !! (n_elements) column of `materials`
-      integer :: unit, stat
+      type(text_file_t) :: file
 
       self%is_open = .false.
       if (.not. (allocated(mesh%coords) .and. allocated(mesh%connectivity))) then
@@ -136,9 +126,10 @@ contains
       self%connectivity = mesh%connectivity
       self%factors = [real(dp) ::]
 
-      call open_for_writing(body_path(self), 'POS3D file "'//body_path(self)//'"', unit, error)
+      call file%open(body_path(self), 'POS3D body file "'//body_path(self)//'"', error)
       if (allocated(error)) return
-      close (unit, iostat=stat)
+      call file%close(error)
+      if (allocated(error)) return
       self%is_open = .true.
       call rewrite(self, error)
    end subroutine writer_open
@@ -161,7 +152,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: node_stress(:, :), node_von_mises(:)
       character(len=:), allocatable :: line_format
-      integer :: unit, stat, n_nodes, n_elements, node, element, k, step, n_names
+      character(len=:), allocatable :: line
+      type(text_file_t) :: file
+      integer :: n_nodes, n_elements, node, element, k, step, n_names
 
       if (.not. self%is_open) then
          call fatal_error(error, 'POS3D output: step added before open or after close')
@@ -191,45 +184,46 @@ contains
       node_von_mises = von_mises_field(node_stress)
 
       step = size(self%factors) + 1
-      call open_for_writing(body_path(self), 'POS3D body file "'//body_path(self)//'"', unit, error, append=.true.)
+      call file%open(body_path(self), 'POS3D body file "'//body_path(self)//'"', error, append=.true.)
       if (allocated(error)) return
-      stat = 0
-      call put(unit, '%RESULT.CASE.STEP', stat)
-      call put(unit, to_string(step), stat)
-      call put(unit, '%RESULT.CASE.STEP.FACTOR', stat)
-      call put_real_row(unit, [time], stat)
-      call put(unit, '%RESULT.CASE.STEP.NODAL.DISPLACEMENT', stat)
-      call put(unit, to_string(n_nodes)//" 'displacement'", stat)
+      call file%put('%RESULT.CASE.STEP')
+      call file%put(to_string(step))
+      call file%put('%RESULT.CASE.STEP.FACTOR')
+      call put_real_row(file, [time])
+      call file%put('%RESULT.CASE.STEP.NODAL.DISPLACEMENT')
+      call file%put(to_string(n_nodes)//" 'displacement'")
       do node = 1, n_nodes
-         call put_real_row(unit, [displacement(:, node), 0.0_dp, 0.0_dp, 0.0_dp], stat, node)
+         call put_real_row(file, [displacement(:, node), 0.0_dp, 0.0_dp, 0.0_dp], node)
       end do
-      call put(unit, '%RESULT.CASE.STEP.NODAL.SCALAR', stat)
-      call put(unit, to_string(n_names + 1), stat)
-      call put(unit, quoted_names(nodal_scalar_names), stat)
-      call put(unit, '%RESULT.CASE.STEP.NODAL.SCALAR.DATA', stat)
-      call put(unit, to_string(n_nodes), stat)
+      call file%put('%RESULT.CASE.STEP.NODAL.SCALAR')
+      call file%put(to_string(n_names + 1))
+      call file%put(quoted_names(nodal_scalar_names))
+      call file%put('%RESULT.CASE.STEP.NODAL.SCALAR.DATA')
+      call file%put(to_string(n_nodes))
       line_format = '(i0,'//to_string(n_names + 1)//'(1x,'//real_edit//'))'
+      allocate (character(len=12 + 25*(n_names + 1)) :: line)
       do node = 1, n_nodes
-         if (stat /= 0) exit
+         if (file%failed()) exit
          if (n_names > 0) then
-            write (unit, line_format, iostat=stat) node, node_von_mises(node), nodal_scalars(:, node)
+            write (line, line_format) node, node_von_mises(node), nodal_scalars(:, node)
          else
-            write (unit, line_format, iostat=stat) node, node_von_mises(node)
+            write (line, line_format) node, node_von_mises(node)
          end if
+         call file%put(trim(line))
       end do
-      call put(unit, '%RESULT.CASE.STEP.ELEMENT.GAUSS.SCALAR', stat)
-      call put(unit, '6', stat)
-      call put(unit, stress_names, stat)
-      call put(unit, '%RESULT.CASE.STEP.ELEMENT.GAUSS.SCALAR.DATA', stat)
-      call put(unit, to_string(n_elements), stat)
+      call file%put('%RESULT.CASE.STEP.ELEMENT.GAUSS.SCALAR')
+      call file%put('6')
+      call file%put(stress_names)
+      call file%put('%RESULT.CASE.STEP.ELEMENT.GAUSS.SCALAR.DATA')
+      call file%put(to_string(n_elements))
       do element = 1, n_elements
-         call put(unit, to_string(element), stat)
-         call put(unit, '8', stat)
+         call file%put(to_string(element))
+         call file%put('8')
          do k = 1, 8
-            call put_real_row(unit, gp_stress(:, pos3d_brick8_from_vtk(k), element), stat)
+            call put_real_row(file, gp_stress(:, pos3d_brick8_from_vtk(k), element))
          end do
       end do
-      call close_written_file(unit, stat, 'POS3D body file "'//body_path(self)//'"', error)
+      call file%close(error)
       if (allocated(error)) return
       self%factors = [self%factors, time]
       call rewrite(self, error)
@@ -247,72 +241,69 @@ contains
       if (stat /= 0) call fatal_error(error, 'cannot delete POS3D body file "'//body_path(self)//'"')
    end subroutine writer_close
 
-   !> Write model, step list, body and %END to `<path>.tmp`, then rename it to `<path>`.
+   !> Write model, step list, body and %END as a replacement of `<path>` (written to
+   !> `<path>.tmp`, renamed to `<path>` when complete).
    subroutine rewrite(self, error)
       type(pos3d_writer_t), intent(in) :: self
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: temporary
-      integer :: unit, stat, node, element, material, step, n_nodes, n_elements
+      character(len=11*12) :: line
+      type(text_file_t) :: file
+      type(error_t), allocatable :: ignored
+      integer :: node, element, material, step, n_nodes, n_elements
 
-      temporary = self%path//'.tmp'
       n_nodes = size(self%coords, 2)
       n_elements = size(self%connectivity, 2)
-      call open_for_writing(temporary, 'POS3D file "'//temporary//'"', unit, error)
+      call file%open(self%path, 'POS3D file "'//self%path//'"', error, replacement=.true.)
       if (allocated(error)) return
-      stat = 0
-      call put(unit, '%HEADER', stat)
-      call put(unit, "'"//self%title//"'", stat)
-      call put(unit, '%NODE', stat)
-      call put(unit, to_string(n_nodes), stat)
-      call put(unit, '%NODE.COORD', stat)
-      call put(unit, to_string(n_nodes), stat)
+      call file%put('%HEADER')
+      call file%put("'"//self%title//"'")
+      call file%put('%NODE')
+      call file%put(to_string(n_nodes))
+      call file%put('%NODE.COORD')
+      call file%put(to_string(n_nodes))
       do node = 1, n_nodes
-         call put_real_row(unit, self%coords(:, node), stat, node)
+         call put_real_row(file, self%coords(:, node), node)
       end do
-      call put(unit, '%MATERIAL', stat)
-      call put(unit, to_string(size(self%materials, 2)), stat)
-      call put(unit, '%MATERIAL.ISOTROPIC', stat)
-      call put(unit, to_string(size(self%materials, 2)), stat)
+      call file%put('%MATERIAL')
+      call file%put(to_string(size(self%materials, 2)))
+      call file%put('%MATERIAL.ISOTROPIC')
+      call file%put(to_string(size(self%materials, 2)))
       do material = 1, size(self%materials, 2)
-         call put_real_row(unit, self%materials(:, material), stat, material)
+         call put_real_row(file, self%materials(:, material), material)
       end do
-      call put(unit, '%ELEMENT', stat)
-      call put(unit, to_string(n_elements), stat)
-      call put(unit, '%ELEMENT.BRICK8', stat)
-      call put(unit, to_string(n_elements), stat)
+      call file%put('%ELEMENT')
+      call file%put(to_string(n_elements))
+      call file%put('%ELEMENT.BRICK8')
+      call file%put(to_string(n_elements))
       do element = 1, n_elements
-         if (stat /= 0) exit
-         write (unit, '(i0,1x,i0,1x,i0,8(1x,i0))', iostat=stat) element, self%element_material(element), &
+         if (file%failed()) exit
+         write (line, '(i0,1x,i0,1x,i0,8(1x,i0))') element, self%element_material(element), &
             integration_order, self%connectivity(pos3d_brick8_from_vtk, element)
+         call file%put(trim(line))
       end do
       if (size(self%factors) > 0) then
-         call put(unit, '%RESULT', stat)
-         call put(unit, '1', stat)
-         call put(unit, "1 'frix'", stat)
-         call put(unit, '%RESULT.CASE', stat)
-         call put(unit, '1 '//to_string(size(self%factors)), stat)
+         call file%put('%RESULT')
+         call file%put('1')
+         call file%put("1 'frix'")
+         call file%put('%RESULT.CASE')
+         call file%put('1 '//to_string(size(self%factors)))
          do step = 1, size(self%factors)
-            call put(unit, to_string(step)//" 'step"//to_string(step)//"'", stat)
+            call file%put(to_string(step)//" 'step"//to_string(step)//"'")
          end do
-         if (stat == 0) call copy_body(self, unit, stat, error)
+         if (.not. file%failed()) call copy_body(self, file, error)
       end if
-      call put(unit, '%END', stat)
+      call file%put('%END')
       if (allocated(error)) then
-         close (unit)
+         call file%close(ignored, discard=.true.)
          return
       end if
-      call close_written_file(unit, stat, 'POS3D file "'//temporary//'"', error)
-      if (allocated(error)) return
-      if (c_rename(temporary//c_null_char, self%path//c_null_char) /= 0) then
-         call fatal_error(error, 'cannot rename POS3D file "'//temporary//'" to "'//self%path//'"')
-      end if
+      call file%close(error)
    end subroutine rewrite
 
-   !> Copy the body file line by line onto `unit`.
-   subroutine copy_body(self, unit, stat, error)
+   !> Copy the body file line by line into `file`.
+   subroutine copy_body(self, file, error)
       type(pos3d_writer_t), intent(in) :: self
-      integer, intent(in) :: unit
-      integer, intent(inout) :: stat
+      type(text_file_t), intent(inout) :: file
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: line
       character(len=256) :: message
@@ -325,8 +316,8 @@ contains
       do
          call read_line(body, line, read_stat)
          if (read_stat /= 0) exit
-         call put(unit, line, stat)
-         if (stat /= 0) exit
+         call file%put(line)
+         if (file%failed()) exit
       end do
       close (body)
       if (.not. is_iostat_end(read_stat) .and. read_stat /= 0) then
@@ -380,16 +371,17 @@ contains
    end function one_line
 
    !> A row of reals, preceded by the id `id` when present.
-   subroutine put_real_row(unit, values, stat, id)
-      integer, intent(in) :: unit
+   subroutine put_real_row(file, values, id)
+      type(text_file_t), intent(inout) :: file
       real(dp), intent(in) :: values(:)
-      integer, intent(inout) :: stat
       integer, intent(in), optional :: id
-      if (stat /= 0) return
+      character(len=12 + 25*size(values)) :: line
+      if (file%failed()) return
       if (present(id)) then
-         write (unit, '(i0,'//to_string(size(values))//'(1x,'//real_edit//'))', iostat=stat) id, values
+         write (line, '(i0,'//to_string(size(values))//'(1x,'//real_edit//'))') id, values
       else
-         write (unit, '('//to_string(size(values))//'(1x,'//real_edit//'))', iostat=stat) values
+         write (line, '('//to_string(size(values))//'(1x,'//real_edit//'))') values
       end if
+      call file%put(trim(line))
    end subroutine put_real_row
 end module frix_pos3d_writer

@@ -27,7 +27,7 @@ module frix_vtk_writer
    use frix_strings, only: to_string, zero_padded
    use frix_mesh, only: mesh_t
    use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises_field
-   use frix_text_output, only: real_edit, open_for_writing, put, close_written_file
+   use frix_text_output, only: real_edit, text_file_t
    implicit none
    private
 
@@ -154,7 +154,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: node_stress(:, :), node_strain(:, :), cell_stress(:, :), cell_strain(:, :)
       character(len=:), allocatable :: file_name, path
-      integer :: unit, stat, i
+      type(text_file_t) :: file
+      integer :: i
 
       call check_sizes(self, mesh, displacement, reaction, stress, strain, error)
       if (allocated(error)) return
@@ -167,55 +168,53 @@ contains
 
       file_name = base_name(self%base)//'_'//zero_padded(step, 4)//'_'//zero_padded(increment, 4)//'.vtu'
       path = self%base//'_'//zero_padded(step, 4)//'_'//zero_padded(increment, 4)//'.vtu'
-      call open_for_writing(path, 'VTK file "'//path//'"', unit, error)
+      call file%open(path, 'VTK file "'//path//'"', error, replacement=.true.)   ! no partial .vtu
       if (allocated(error)) return
-      stat = 0
-      call put(unit, '<?xml version="1.0"?>', stat)
-      call put(unit, '<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64">', stat)
-      call put(unit, '<UnstructuredGrid>', stat)
-      call put(unit, '<FieldData>', stat)
-      call put_reals(unit, 'TimeValue', reshape([time], [1, 1]), stat, field_data=.true.)
-      call put_integers(unit, 'step', 'Int32', [step], stat, field_data=.true.)
-      call put_integers(unit, 'increment', 'Int32', [increment], stat, field_data=.true.)
-      call put(unit, '</FieldData>', stat)
-      call put(unit, '<Piece NumberOfPoints="'//to_string(mesh%n_nodes)//'" NumberOfCells="'// &
-               to_string(mesh%n_elements)//'">', stat)
+      call file%put('<?xml version="1.0"?>')
+      call file%put('<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64">')
+      call file%put('<UnstructuredGrid>')
+      call file%put('<FieldData>')
+      call put_reals(file, 'TimeValue', reshape([time], [1, 1]), field_data=.true.)
+      call put_integers(file, 'step', 'Int32', [step], field_data=.true.)
+      call put_integers(file, 'increment', 'Int32', [increment], field_data=.true.)
+      call file%put('</FieldData>')
+      call file%put('<Piece NumberOfPoints="'//to_string(mesh%n_nodes)//'" NumberOfCells="'// &
+               to_string(mesh%n_elements)//'">')
 
-      call put(unit, '<PointData Vectors="displacement" Tensors="stress" Scalars="von_mises">', stat)
-      call put_reals(unit, 'displacement', displacement, stat)
-      call put_reals(unit, 'reaction', reaction, stat)
-      call put_reals(unit, 'stress', vtk_tensor_order(node_stress, 1.0_dp), stat)
-      call put_reals(unit, 'strain', vtk_tensor_order(node_strain, 0.5_dp), stat)
-      call put_reals(unit, 'von_mises', reshape(von_mises_field(node_stress), [1, mesh%n_nodes]), stat)
+      call file%put('<PointData Vectors="displacement" Tensors="stress" Scalars="von_mises">')
+      call put_reals(file, 'displacement', displacement)
+      call put_reals(file, 'reaction', reaction)
+      call put_reals(file, 'stress', vtk_tensor_order(node_stress, 1.0_dp))
+      call put_reals(file, 'strain', vtk_tensor_order(node_strain, 0.5_dp))
+      call put_reals(file, 'von_mises', reshape(von_mises_field(node_stress), [1, mesh%n_nodes]))
       do i = 1, size(self%point_fields)
-         call put_reals(unit, self%point_fields(i)%name, self%point_fields(i)%values, stat)
+         call put_reals(file, self%point_fields(i)%name, self%point_fields(i)%values)
       end do
-      call put(unit, '</PointData>', stat)
+      call file%put('</PointData>')
 
-      call put(unit, '<CellData Tensors="stress" Scalars="von_mises">', stat)
-      call put_reals(unit, 'stress', vtk_tensor_order(cell_stress, 1.0_dp), stat)
-      call put_reals(unit, 'strain', vtk_tensor_order(cell_strain, 0.5_dp), stat)
-      call put_reals(unit, 'von_mises', reshape(von_mises_field(cell_stress), [1, mesh%n_elements]), stat)
-      call put_integers(unit, 'element_id', 'Int32', mesh%element_ids, stat)
-      call put_integers(unit, 'block', 'Int32', mesh%element_block, stat)
+      call file%put('<CellData Tensors="stress" Scalars="von_mises">')
+      call put_reals(file, 'stress', vtk_tensor_order(cell_stress, 1.0_dp))
+      call put_reals(file, 'strain', vtk_tensor_order(cell_strain, 0.5_dp))
+      call put_reals(file, 'von_mises', reshape(von_mises_field(cell_stress), [1, mesh%n_elements]))
+      call put_integers(file, 'element_id', 'Int32', mesh%element_ids)
+      call put_integers(file, 'block', 'Int32', mesh%element_block)
       do i = 1, size(self%cell_fields)
-         call put_reals(unit, self%cell_fields(i)%name, self%cell_fields(i)%values, stat)
+         call put_reals(file, self%cell_fields(i)%name, self%cell_fields(i)%values)
       end do
-      call put(unit, '</CellData>', stat)
+      call file%put('</CellData>')
 
-      call put(unit, '<Points>', stat)
-      call put_reals(unit, 'coordinates', mesh%coords, stat)
-      call put(unit, '</Points>', stat)
-      call put(unit, '<Cells>', stat)
-      call put_integers(unit, 'connectivity', 'Int64', reshape(mesh%connectivity - 1, [8*mesh%n_elements]), stat, &
-                        per_line=8)
-      call put_integers(unit, 'offsets', 'Int64', [(8*i, i=1, mesh%n_elements)], stat)
-      call put_integers(unit, 'types', 'UInt8', [(vtk_hexahedron, i=1, mesh%n_elements)], stat)
-      call put(unit, '</Cells>', stat)
-      call put(unit, '</Piece>', stat)
-      call put(unit, '</UnstructuredGrid>', stat)
-      call put(unit, '</VTKFile>', stat)
-      call close_written_file(unit, stat, 'VTK file "'//path//'"', error, close_iostat=.true.)
+      call file%put('<Points>')
+      call put_reals(file, 'coordinates', mesh%coords)
+      call file%put('</Points>')
+      call file%put('<Cells>')
+      call put_integers(file, 'connectivity', 'Int64', reshape(mesh%connectivity - 1, [8*mesh%n_elements]), per_line=8)
+      call put_integers(file, 'offsets', 'Int64', [(8*i, i=1, mesh%n_elements)])
+      call put_integers(file, 'types', 'UInt8', [(vtk_hexahedron, i=1, mesh%n_elements)])
+      call file%put('</Cells>')
+      call file%put('</Piece>')
+      call file%put('</UnstructuredGrid>')
+      call file%put('</VTKFile>')
+      call file%close(error)
       if (allocated(error)) return
 
       call append_dataset(self%datasets, file_name, time)
@@ -285,77 +284,81 @@ contains
       tensor(6, :) = shear_factor*voigt(5, :)
    end function vtk_tensor_order
 
-   !> Rewrite `<base>.pvd` listing every dataset written so far.
+   !> Rewrite `<base>.pvd` listing every dataset written so far (as a replacement: a failed
+   !> write leaves the previous collection).
    subroutine write_collection(self, error)
       type(vtk_series_t), intent(in) :: self
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: path
       character(len=24) :: time_text
-      integer :: unit, stat, i
+      type(text_file_t) :: file
+      integer :: i
       path = self%base//'.pvd'
-      call open_for_writing(path, 'ParaView collection "'//path//'"', unit, error)
+      call file%open(path, 'ParaView collection "'//path//'"', error, replacement=.true.)
       if (allocated(error)) return
-      stat = 0
-      call put(unit, '<?xml version="1.0"?>', stat)
-      call put(unit, '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">', stat)
-      call put(unit, '<Collection>', stat)
+      call file%put('<?xml version="1.0"?>')
+      call file%put('<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">')
+      call file%put('<Collection>')
       do i = 1, size(self%datasets)
-         if (stat == 0) write (time_text, '('//real_edit//')', iostat=stat) self%datasets(i)%time
-         call put(unit, '<DataSet timestep="'//trim(adjustl(time_text))//'" group="" part="0" file="'// &
-                  self%datasets(i)%file_name//'"/>', stat)
+         write (time_text, '('//real_edit//')') self%datasets(i)%time
+         call file%put('<DataSet timestep="'//trim(adjustl(time_text))//'" group="" part="0" file="'// &
+                  self%datasets(i)%file_name//'"/>')
       end do
-      call put(unit, '</Collection>', stat)
-      call put(unit, '</VTKFile>', stat)
-      call close_written_file(unit, stat, 'ParaView collection "'//path//'"', error)
+      call file%put('</Collection>')
+      call file%put('</VTKFile>')
+      call file%close(error)
    end subroutine write_collection
 
    !> A Float64 DataArray, one tuple (column of `values`) per line.
-   subroutine put_reals(unit, name, values, stat, field_data)
-      integer, intent(in) :: unit
+   subroutine put_reals(file, name, values, field_data)
+      type(text_file_t), intent(inout) :: file
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:, :)          !! (n_components, n_tuples)
-      integer, intent(inout) :: stat
       logical, intent(in), optional :: field_data   !! FieldData arrays carry NumberOfTuples
       character(len=:), allocatable :: line_format
+      character(len=25*size(values, 1)) :: line
       integer :: i
       line_format = '('//to_string(size(values, 1))//'(1x,'//real_edit//'))'
       if (is_true(field_data)) then
-         call put(unit, '<DataArray type="Float64" Name="'//name//'" NumberOfTuples="'// &
-                  to_string(size(values, 2))//'" format="ascii">', stat)
+         call file%put('<DataArray type="Float64" Name="'//name//'" NumberOfTuples="'// &
+                  to_string(size(values, 2))//'" format="ascii">')
       else
-         call put(unit, '<DataArray type="Float64" Name="'//name//'" NumberOfComponents="'// &
-                  to_string(size(values, 1))//'" format="ascii">', stat)
+         call file%put('<DataArray type="Float64" Name="'//name//'" NumberOfComponents="'// &
+                  to_string(size(values, 1))//'" format="ascii">')
       end if
       do i = 1, size(values, 2)
-         if (stat /= 0) return
-         write (unit, line_format, iostat=stat) values(:, i)
+         if (file%failed()) return
+         write (line, line_format) values(:, i)
+         call file%put(line)
       end do
-      call put(unit, '</DataArray>', stat)
+      call file%put('</DataArray>')
    end subroutine put_reals
 
    !> An integer DataArray of VTK type `vtk_type` (Int32, Int64, UInt8), `per_line` values per line.
-   subroutine put_integers(unit, name, vtk_type, values, stat, per_line, field_data)
-      integer, intent(in) :: unit
+   subroutine put_integers(file, name, vtk_type, values, per_line, field_data)
+      type(text_file_t), intent(inout) :: file
       character(len=*), intent(in) :: name, vtk_type
       integer, intent(in) :: values(:)
-      integer, intent(inout) :: stat
       integer, intent(in), optional :: per_line
       logical, intent(in), optional :: field_data
+      character(len=:), allocatable :: line
       integer :: first, last, chunk
       chunk = 10
       if (present(per_line)) chunk = per_line
+      allocate (character(len=12*chunk) :: line)
       if (is_true(field_data)) then
-         call put(unit, '<DataArray type="'//vtk_type//'" Name="'//name//'" NumberOfTuples="'// &
-                  to_string(size(values))//'" format="ascii">', stat)
+         call file%put('<DataArray type="'//vtk_type//'" Name="'//name//'" NumberOfTuples="'// &
+                  to_string(size(values))//'" format="ascii">')
       else
-         call put(unit, '<DataArray type="'//vtk_type//'" Name="'//name//'" format="ascii">', stat)
+         call file%put('<DataArray type="'//vtk_type//'" Name="'//name//'" format="ascii">')
       end if
       do first = 1, size(values), chunk
-         if (stat /= 0) return
+         if (file%failed()) return
          last = min(first + chunk - 1, size(values))
-         write (unit, '(*(1x,i0))', iostat=stat) values(first:last)
+         write (line, '(*(1x,i0))') values(first:last)
+         call file%put(trim(line))
       end do
-      call put(unit, '</DataArray>', stat)
+      call file%put('</DataArray>')
    end subroutine put_integers
 
    !> An optional flag, false when absent.

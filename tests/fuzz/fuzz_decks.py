@@ -18,6 +18,14 @@ and then for real (`--quiet --out DIR`), each under a timeout, and must:
     and not reject the deck that --check accepted,
   - when it exits 0, write no NaN, Inf or overflowed field (`*****`, `2.5+307`) into any
     result file (.vtu, .pvd, .csv, listing, .pos; .h5 with h5py when it is available).
+With --fail-writes LIB (tests/io/fail_writes.c, built as libfrix_fail_writes.so) and
+--faults N, N runs of the unmutated base decks follow, each with LIB preloaded so that the
+writes into one result file (or into any) fail with ENOSPC after a random number of bytes, as
+on a full disk. Fault run N of seed S depends on (S, N) only (`--only-fault N`). Each must:
+  - not die by a signal, exit with 0 or 1, print no crash report,
+  - when a write was refused: exit 1 with a message `cannot ...` (`HDF5: cannot ...`) naming
+    a file of the run, no success line (`converged increments; results in`), no `.tmp` file
+    left; when none was: exit 0.
 A failing mutant is copied into --failures-dir with MUTATION.txt (a one-line description),
 frix's stdout and stderr, and a reproduce command is printed. Exit status 1 if any mutant
 failed, 0 otherwise. See tests/fuzz/README.md.
@@ -375,8 +383,9 @@ class RunResult:
         self.timed_out, self.seconds = timed_out, seconds
 
 
-def run_frix(args, cwd, timeout):
+def run_frix(args, cwd, timeout, extra_env=None):
     env = dict(os.environ)
+    env.update(extra_env or {})
     env.setdefault('OMP_NUM_THREADS', '1')
     env.setdefault('OPENBLAS_NUM_THREADS', '1')
     start = time.monotonic()
@@ -654,6 +663,65 @@ def show(data, limit=12):
     return '\n'.join('      | ' + l for l in lines)
 
 
+# ----------------------------------------------------------------------------- write failures
+# Result files whose writes fail in a fault run ('' = every file of the run).
+FAULT_TARGETS = ['', '.h5', '_listing.txt', '.vtu', '.pvd', '.pos', '_history.csv', '_contact.csv']
+
+
+def make_fault(bases, seed, index):
+    """Fault run `index` of `seed`: (base, target file pattern, bytes before the failure)."""
+    rng = random.Random('frix-fuzz-fault:%d:%d' % (seed, index))
+    base = rng.choice(bases)
+    target = rng.choice(FAULT_TARGETS) if rng.random() < 0.6 else ''
+    limit = int(10 ** rng.uniform(0, 6))   # 1 B .. 1 MB, log-uniform: every stage of a run
+    return base, target, limit
+
+
+def check_fault(args, bases, index, work_root):
+    base, target, limit = make_fault(bases, args.seed, index)
+    descriptions = ['writes into %s fail after %d bytes' % (('*' + target) if target else 'any file',
+                                                              limit)]
+    outcome = Outcome(index, base, descriptions, ['fault'])
+    run_dir = os.path.join(work_root, 'f%05d' % index)
+    os.makedirs(run_dir)
+    for name, data in base.files.items():
+        with open(os.path.join(run_dir, name), 'wb') as f:
+            f.write(data)
+    report = os.path.join(run_dir, 'refused')
+    env = {'FRIX_FAIL_WRITE_PATH': target, 'FRIX_FAIL_WRITE_AFTER': str(limit),
+           'FRIX_FAIL_WRITE_REPORT': report, 'LD_PRELOAD': os.path.abspath(args.fail_writes),
+           'ASAN_OPTIONS': ':'.join(filter(None, [os.environ.get('ASAN_OPTIONS', ''),
+                                                  'verify_asan_link_order=0']))}
+    run = run_frix([os.path.abspath(args.frix), base.deck_name, '--out', 'out'], run_dir,
+                   args.timeout, env)
+    outcome.problems += crash_problems(run, 'frix (run)')
+    refused = os.path.exists(report)
+    if not outcome.problems:
+        if refused:
+            outcome.category = 'write_failure'
+            if run.status != 1:
+                outcome.problems.append('exit status %d after a refused write, expected 1'
+                                        % run.status)
+            if not re.search(rb'cannot [^\n]*out/' + re.escape(base.name.encode()), run.stderr):
+                outcome.problems.append('no message "cannot ..." naming a result file')
+            if b'converged increments; results in' in run.stdout:
+                outcome.problems.append('the success line after a refused write')
+            leftovers = [n for _, _, names in os.walk(os.path.join(run_dir, 'out'))
+                         for n in names if n.endswith('.tmp')]
+            if leftovers:
+                outcome.problems.append('temporary files left: %s' % ', '.join(leftovers))
+        else:
+            outcome.category = 'completed'
+            if run.status != 0:
+                outcome.problems.append('exit status %d, no write refused' % run.status)
+    if outcome.problems:
+        outcome.category = 'failed'
+        outcome.evidence.append(('frix (run): exit status %s%s' % (
+            run.status, ', timed out' if run.timed_out else ''), run.stdout, run.stderr))
+    shutil.rmtree(run_dir, ignore_errors=True)
+    return outcome
+
+
 # ----------------------------------------------------------------------------- main
 def limit_memory(args):
     """Cap the address space of the frix processes (inherited from this one), so that a mutant
@@ -696,9 +764,16 @@ def parse_args(argv):
                         help='address-space limit of each frix process (RLIMIT_AS; default 4096 MB, '
                              '0: none; not applied to a sanitizer build)')
     parser.add_argument('--verbose', action='store_true', help='one line per mutant')
+    parser.add_argument('--fail-writes', default=None,
+                        help='the write-failure library (tests/io/fail_writes.c) for --faults')
+    parser.add_argument('--faults', type=int, default=0,
+                        help='runs of the base decks with a write failure (needs --fail-writes)')
+    parser.add_argument('--only-fault', default=None, help='run these fault runs only: N[,N...]')
     args = parser.parse_args(argv)
     if not args.frix and not args.list:
         parser.error('--frix (or the environment variable FRIX) is required')
+    if (args.faults or args.only_fault) and not args.fail_writes:
+        parser.error('--faults needs --fail-writes LIB')
     return args
 
 
@@ -714,8 +789,14 @@ def main(argv):
     bases = [Base(p) for p in relpaths]
     if args.only:
         indices = [int(x) for x in args.only.split(',') if x.strip()]
+    elif args.only_fault:
+        indices = []
     else:
         indices = list(range(args.first, args.first + args.count))
+    if args.only_fault:
+        faults = [int(x) for x in args.only_fault.split(',') if x.strip()]
+    else:
+        faults = list(range(args.faults)) if not args.only else []
 
     if args.list:
         for index in indices:
@@ -759,6 +840,7 @@ def main(argv):
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
             futures = [pool.submit(check_mutant, args, bases, i, work_root, counters)
                        for i in indices]
+            futures += [pool.submit(check_fault, args, bases, i, work_root) for i in faults]
             for future in futures:
                 outcome = future.result()
                 outcomes.append(outcome)
@@ -775,8 +857,10 @@ def main(argv):
     me = os.path.abspath(__file__)
     for o in failed:
         print('')
-        print('FAIL: mutant %d of seed %d (base %s): %s' % (o.index, args.seed, o.base.relpath,
-                                                             '; '.join(o.descriptions)))
+        fault = o.kinds == ['fault']
+        print('FAIL: %s %d of seed %d (base %s): %s' % ('fault run' if fault else 'mutant', o.index,
+                                                         args.seed, o.base.relpath,
+                                                         '; '.join(o.descriptions)))
         for p in o.problems:
             print(('        ' + p.strip()) if p.startswith('    ') else ('    - ' + p))
         for title, stdout, stderr in o.evidence:
@@ -787,6 +871,10 @@ def main(argv):
             if stderr.strip():
                 print('      stderr:')
                 print(show(stderr))
+        if fault:
+            print('    reproduce: python3 %s --frix %s --fail-writes %s --seed %d --only-fault %d'
+                  % (me, frix_abs, os.path.abspath(args.fail_writes), args.seed, o.index))
+            continue
         print('    mutant saved in %s (MUTATION.txt, frix_*.stderr)' % o.saved_dir)
         print('    reproduce: cd %s && %s %s --quiet --out out' % (o.saved_dir, frix_abs,
                                                                  o.base.deck_name))
@@ -802,18 +890,26 @@ def main(argv):
             shown = ', '.join(str(i) for i in members[:8]) + (' ...' if len(members) > 8 else '')
             print('  %4d x %s: %s' % (len(members), key, shown))
 
-    count = {c: sum(1 for o in outcomes if o.category == c)
+    mutants = [o for o in outcomes if o.kinds != ['fault']]
+    fault_runs = [o for o in outcomes if o.kinds == ['fault']]
+    count = {c: sum(1 for o in mutants if o.category == c)
              for c in ('rejected', 'completed', 'analysis_failure', 'failed')}
     print('')
     note = ''
     if counters['h5_unchecked']:
         note = '; %d .h5 files not checked (no h5py in this python)' % counters['h5_unchecked']
-    print('fuzz: seed %d, mutants %d..%d, %d base decks, %d jobs, %.1f s%s'
-          % (args.seed, min(indices), max(indices), len(bases), args.jobs, elapsed, note))
+    print('fuzz: seed %d, mutants %s, %d base decks, %d jobs, %.1f s%s'
+          % (args.seed, '%d..%d' % (min(indices), max(indices)) if indices else 'none',
+             len(bases), args.jobs, elapsed, note))
     print('fuzz: %d mutants: %d rejected with a located error, %d ran to completion, '
-          '%d analysis failures; %d failed' % (len(outcomes), count['rejected'],
+          '%d analysis failures; %d failed' % (len(mutants), count['rejected'],
                                                count['completed'], count['analysis_failure'],
                                                count['failed']))
+    if fault_runs:
+        print('fuzz: %d fault runs: %d met a write failure, %d ran to completion; %d failed'
+              % (len(fault_runs), sum(1 for o in fault_runs if o.category == 'write_failure'),
+                 sum(1 for o in fault_runs if o.category == 'completed'),
+                 sum(1 for o in fault_runs if o.category == 'failed')))
     return 1 if failed else 0
 
 

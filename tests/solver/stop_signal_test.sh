@@ -7,7 +7,8 @@
 #       have their header and one row per converged increment (history) or per slave node and
 #       increment (contact)).
 #   stop_signal_test.sh FRIX DECK KILL       SIGKILL during the first increment (nothing can
-#       be done then): the contact CSV still holds its header line.
+#       be done then): the contact CSV still holds its header line, and h5py opens the HDF5
+#       file, which holds the mesh and no increment.
 # The signal is sent once the history CSV shows two converged increments (for KILL: once the
 # first Newton iteration is printed).
 set -u
@@ -42,7 +43,19 @@ if [ "$signal" = KILL ]; then
     step,increment,time,pair,pass,node,*) ;;
     *) fail "the contact CSV has no header after SIGKILL: \"$header\"" ;;
   esac
-  [ "$failed" -eq 0 ] && echo "ok: SIGKILL during the first increment leaves the contact CSV header"
+  /usr/bin/python3 - "${base}.h5" <<'PY' || failed=1
+import sys, h5py
+try:
+    with h5py.File(sys.argv[1], 'r') as f:
+        n, nodes = len(f['increments']), f['mesh/coordinates'].shape[0]
+except Exception as exc:
+    print('FAIL: h5py cannot open the HDF5 file after SIGKILL: %s' % exc)
+    sys.exit(1)
+if n != 0 or nodes == 0:
+    print('FAIL: the HDF5 file after SIGKILL: %d increments, %d nodes' % (n, nodes))
+    sys.exit(1)
+PY
+  [ "$failed" -eq 0 ] && echo "ok: SIGKILL during the first increment leaves the contact CSV header and a readable .h5"
   exit "$failed"
 fi
 
