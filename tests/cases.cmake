@@ -50,8 +50,14 @@ add_test(NAME solver_overflow_load
 add_test(NAME solver_huge_maxiter
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_maxiter.dck 0
                  "3 converged increments" huge_maxiter_0002_0002.vtu)
+# Numbers beyond the fixed-width formats: an automatic EPSN of 1.3462E-297 in the progress and
+# the listing header (no asterisks: check_run.sh).
+add_test(NAME solver_tiny_penalty_factor
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/tiny_penalty_factor.dck 1
+                 "EPSN 1.3462E-297 (automatic: 1.0000E-300 x 1.3462E+03" tiny_penalty_factor_listing.txt)
 set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
-                     solver_overflow_load solver_huge_maxiter PROPERTIES LABELS regression)
+                     solver_overflow_load solver_huge_maxiter solver_tiny_penalty_factor
+                     PROPERTIES LABELS regression)
 # SIGINT / SIGTERM stop a run at a safe point (exit 3, files complete, no temporary file);
 # SIGKILL during the first increment leaves the contact CSV's header.
 foreach(signal INT TERM KILL)

@@ -17,7 +17,7 @@
 module frix_driver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, padded, fixed_point
    use frix_model, only: model_t
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
@@ -337,7 +337,7 @@ contains
       character(len=64) :: label
       real(dp) :: target_time
       repeat = .false.
-      write (label, '("step",i3,"  incr",i4)') control%step, control%increment + 1
+      label = 'step'//padded(to_string(control%step), 3)//'  incr'//padded(to_string(control%increment + 1), 4)
       if (control%path_control .and. .not. control%landing) then
          associate (path => control%path, final_target => model%steps(control%step)%path_target)
             path%target = state%committed_u(path%equation) + control%path_increment*control%size_now/control%nominal
@@ -569,12 +569,18 @@ contains
       integer, intent(in) :: iterations
       real(dp) :: left, end_time
       end_time = real(size(model%steps), dp)
-      write (*, '(2x,"converged in",i4," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
-             '" (",f5.1," %)")', advance='no') iterations, seconds, time, end_time, 100.0_dp*time/end_time
-      ! no estimate when the load factor decreased (path following past a limit point)
+      write (*, '(a)', advance='no') '  converged in'//padded(to_string(iterations), 4)//' iterations,'// &
+         padded(fixed_point(seconds, 2), 9)//' s;  t ='//padded(fixed_point(time, 4), 9)//' of'// &
+         padded(fixed_point(end_time, 1), 6)//' ('//padded(fixed_point(100.0_dp*time/end_time, 1), 5)//' %)'
+      ! no estimate when the load factor decreased (path following past a limit point) or
+      ! when the rate gives none (a pseudo time past the end, a step of zero length)
       if (time > previous_time) then
          left = seconds*(end_time - time)/(time - previous_time)
-         write (*, '(",  about",f10.1," s left")', advance='no') left
+         if (left >= 0.0_dp .and. left < 1.0e9_dp) then
+            write (*, '(a)', advance='no') ',  about'//padded(fixed_point(left, 1), 10)//' s left'
+         else if (left >= 1.0e9_dp) then
+            write (*, '(a)', advance='no') ',  more than 1e9 s left'
+         end if
       end if
       write (*, '(a)') ''
       flush (6)
