@@ -29,7 +29,7 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/verification/verification.cmake OPTIONAL)
 set(check_run ${CMAKE_CURRENT_SOURCE_DIR}/solver/check_run.sh)
 add_test(NAME solver_unsupported_direction
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/unsupported_direction.dck 1
-                 "has no Dirichlet condition in direction y")
+                 "has no Dirichlet condition in directions y and z")
 add_test(NAME solver_rotation_mode
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/rotation_mode.dck 1
                  "the stiffness matrix is singular at node")
@@ -55,8 +55,13 @@ add_test(NAME solver_huge_maxiter
 add_test(NAME solver_tiny_penalty_factor
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/tiny_penalty_factor.dck 1
                  "EPSN 1.3462E-297 (automatic: 1.0000E-300 x 1.3462E+03" tiny_penalty_factor_listing.txt)
+# A TIE between two faces of one body is legitimate (a periodic or seam tie) when the body is
+# supported; unsupported it is a deck error (tests/errors/tie_same_body_unsupported.dck).
+add_test(NAME solver_tie_same_body
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/tie_same_body.dck 0
+                 "1 converged increments")
 set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
-                     solver_overflow_load solver_huge_maxiter solver_tiny_penalty_factor
+                     solver_overflow_load solver_huge_maxiter solver_tiny_penalty_factor solver_tie_same_body
                      PROPERTIES LABELS regression)
 # SIGINT / SIGTERM stop a run at a safe point (exit 3, files complete, no temporary file);
 # SIGKILL during the first increment leaves the contact CSV's header.

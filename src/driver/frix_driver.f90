@@ -31,9 +31,7 @@ module frix_driver
    use frix_increment_results, only: increment_results_t
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
-   use frix_support_check, only: check_rigid_body_support
    use frix_state_restart, only: read_state_restart
-   use frix_mesh, only: hex8_face_nodes
    use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
    private
@@ -134,8 +132,6 @@ contains
       call setup_newton(model, state, context, error)
       if (allocated(error)) return
       call prescribed_displacements(model, 0.0_dp, context%fixed, context%prescribed)
-      call check_rigid_body_support(model, context%fixed, error, contact_nodes(model))
-      if (allocated(error)) return
       context%quiet = options%quiet
       first_step = 1
       if (allocated(options%restart_path)) then
@@ -585,30 +581,6 @@ contains
       write (*, '(a)') ''
       flush (6)
    end subroutine print_increment_done
-
-   !> Nodes of the surfaces named in contact pairs (bodies held by contact).
-   function contact_nodes(model) result(in_contact)
-      type(model_t), intent(in) :: model
-      logical, allocatable :: in_contact(:)
-      integer :: p
-      allocate (in_contact(model%mesh%n_nodes), source=.false.)
-      if (.not. allocated(model%contact_pairs)) return
-      do p = 1, size(model%contact_pairs)
-         call mark_surface(model%contact_pairs(p)%slave_surface)
-         call mark_surface(model%contact_pairs(p)%master_surface)   ! 0: rigid plane
-      end do
-   contains
-      subroutine mark_surface(surface)
-         integer, intent(in) :: surface
-         integer :: k
-         if (surface == 0) return
-         associate (faces => model%mesh%surfaces(surface))
-            do k = 1, size(faces%elements)
-               in_contact(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(k)), faces%elements(k))) = .true.
-            end do
-         end associate
-      end subroutine mark_surface
-   end function contact_nodes
 
    !> A pseudo time with 10 significant digits.
    pure function time_text(time) result(text)
