@@ -60,8 +60,17 @@ add_test(NAME solver_tiny_penalty_factor
 add_test(NAME solver_tie_same_body
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/tie_same_body.dck 0
                  "1 converged increments")
+# Derived output values beyond the range of reals: the von Mises stress of 1e198 stresses, the
+# POS3D material block's E of YOUNG 1e200 (check_run.sh: no Inf in any file).
+add_test(NAME solver_huge_modulus
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_modulus.dck 1
+                 "is not written: the von Mises stress (element mean) at element 1 is not finite")
+add_test(NAME solver_huge_modulus_pos3d
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_modulus_pos3d.dck 1
+                 "POS3D output: the material block's E or nu of material number 1 (in deck order) is not finite")
 set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
                      solver_overflow_load solver_huge_maxiter solver_tiny_penalty_factor solver_tie_same_body
+                     solver_huge_modulus solver_huge_modulus_pos3d
                      PROPERTIES LABELS regression)
 # SIGINT / SIGTERM stop a run at a safe point (exit 3, files complete, no temporary file);
 # SIGKILL during the first increment leaves the contact CSV's header.
