@@ -29,7 +29,7 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/verification/verification.cmake OPTIONAL)
 set(check_run ${CMAKE_CURRENT_SOURCE_DIR}/solver/check_run.sh)
 add_test(NAME solver_unsupported_direction
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/unsupported_direction.dck 1
-                 "has no Dirichlet condition in direction y")
+                 "has no Dirichlet condition in directions y and z")
 add_test(NAME solver_rotation_mode
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/rotation_mode.dck 1
                  "the stiffness matrix is singular at node")
@@ -50,8 +50,29 @@ add_test(NAME solver_overflow_load
 add_test(NAME solver_huge_maxiter
          COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_maxiter.dck 0
                  "3 converged increments" huge_maxiter_0002_0002.vtu)
+# Numbers beyond the fixed-width formats: an automatic EPSN of 1.3462E-297 in the progress and
+# the listing header (no asterisks: check_run.sh).
+add_test(NAME solver_tiny_penalty_factor
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/tiny_penalty_factor.dck 1
+                 "EPSN 1.3462E-297 (automatic: 1.0000E-300 x 1.3462E+03" tiny_penalty_factor_listing.txt)
+# A TIE between two faces of one body is legitimate (a periodic or seam tie) when the body is
+# supported; unsupported it is a deck error (tests/errors/tie_same_body_unsupported.dck).
+add_test(NAME solver_tie_same_body
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/tie_same_body.dck 0
+                 "1 converged increments")
+# Derived output values beyond the range of reals: the von Mises stress of 1e198 stresses, with
+# and without POS3D (whose material block writes E = 1e200 finite; check_run.sh: no Inf in any
+# file).
+add_test(NAME solver_huge_modulus
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_modulus.dck 1
+                 "is not written: the von Mises stress (element mean) at element 1 is not finite")
+add_test(NAME solver_huge_modulus_pos3d
+         COMMAND bash ${check_run} ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/solver/huge_modulus_pos3d.dck 1
+                 "is not written: the von Mises stress (element mean) at element 1 is not finite")
 set_tests_properties(solver_unsupported_direction solver_rotation_mode solver_limit_point_cutback
-                     solver_overflow_load solver_huge_maxiter PROPERTIES LABELS regression)
+                     solver_overflow_load solver_huge_maxiter solver_tiny_penalty_factor solver_tie_same_body
+                     solver_huge_modulus solver_huge_modulus_pos3d
+                     PROPERTIES LABELS regression)
 # SIGINT / SIGTERM stop a run at a safe point (exit 3, files complete, no temporary file);
 # SIGKILL during the first increment leaves the contact CSV's header.
 foreach(signal INT TERM KILL)

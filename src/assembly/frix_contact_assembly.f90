@@ -45,6 +45,7 @@ module frix_contact_assembly
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
    public :: contact_history_rows, get_contact_history, set_contact_history
    public :: reset_friction_branches, release_inconsistent_branches
+   public :: check_ties
 
    type :: contact_system_t
       type(contact_pass_t), allocatable :: passes(:)
@@ -118,6 +119,32 @@ contains
       unset = unset .or. (parameters%automatic_tangential_penalty .and. .not. parameters%tangential_penalty > 0.0_dp)
       if (unset) call fatal_error(error, 'contact pair '//to_string(id)//': its automatic penalty was not set')
    end subroutine check_penalties_set
+
+   !> The checks of frix_tie_constraints on the ties of `model` alone, as the deck reader runs
+   !> them: `error` and `pair`, the index of the contact pair (TIE) it is about.
+   subroutine check_ties(model, pair, error)
+      type(model_t), intent(in) :: model
+      integer, intent(out) :: pair
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_pass_t), allocatable :: passes(:)
+      integer :: p, k, culprit
+      pair = 0
+      allocate (passes(count(model%contact_pairs%tied)))
+      k = 0
+      do p = 1, size(model%contact_pairs)
+         if (.not. model%contact_pairs(p)%tied) cycle
+         k = k + 1
+         call setup_pass(model, p, model%contact_pairs(p)%slave_surface, model%contact_pairs(p)%master_surface, &
+                         passes(k), error)
+         if (allocated(error)) then
+            pair = p
+            return
+         end if
+      end do
+      if (k == 0) return
+      call check_tie_nodes(model%mesh, passes, model%contact_pairs(passes%pair)%id, error, culprit)
+      if (culprit > 0) pair = passes(culprit)%pair
+   end subroutine check_ties
 
    !> Ties: the checks of frix_tie_constraints and the node pairs their elimination needs, kept
    !> among the extra pairs of every sparse pattern.

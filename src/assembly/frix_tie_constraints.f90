@@ -35,14 +35,16 @@ contains
 
    !> An error when a node is tied twice (slave of two ties) or is a tied slave and the master
    !> node of a tie (chains of ties are not eliminated); `tie_ids` are the deck ids of the
-   !> passes' pairs.
-   subroutine check_tie_nodes(mesh, passes, tie_ids, error)
+   !> passes' pairs; `culprit`, if present, the pass whose tie the error is about (0 without one).
+   subroutine check_tie_nodes(mesh, passes, tie_ids, error, culprit)
       type(mesh_t), intent(in) :: mesh
       type(contact_pass_t), intent(in) :: passes(:)
       integer, intent(in) :: tie_ids(:)
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(out), optional :: culprit
       integer, allocatable :: slave_of(:), master_of(:)
       integer :: p, i, node
+      if (present(culprit)) culprit = 0
       allocate (slave_of(mesh%n_nodes), master_of(mesh%n_nodes), source=0)
       do p = 1, size(passes)
          if (.not. passes(p)%tied) cycle
@@ -53,6 +55,7 @@ contains
                call fatal_error(error, 'TIE '//to_string(tie_ids(p))//': node '//to_string(mesh%node_ids(node))// &
                                 ' is already a slave node of TIE '//to_string(tie_ids(slave_of(node)))// &
                                 ' (a node can be tied once)')
+               if (present(culprit)) culprit = p
                return
             end if
             slave_of(node) = p
@@ -60,9 +63,11 @@ contains
          end do
       end do
       node = findloc(slave_of > 0 .and. master_of > 0, .true., dim=1)
-      if (node > 0) call fatal_error(error, 'TIE '//to_string(tie_ids(slave_of(node)))//': node '// &
-                                     to_string(mesh%node_ids(node))//' is a slave node and a master node of TIE '// &
-                                     to_string(tie_ids(master_of(node)))//' (chained ties are not supported)')
+      if (node == 0) return
+      call fatal_error(error, 'TIE '//to_string(tie_ids(slave_of(node)))//': node '// &
+                       to_string(mesh%node_ids(node))//' is a slave node and a master node of TIE '// &
+                       to_string(tie_ids(master_of(node)))//' (chained ties are not supported)')
+      if (present(culprit)) culprit = slave_of(node)
    end subroutine check_tie_nodes
 
    !> The node pairs the elimination needs in the sparse pattern, from the mesh's element

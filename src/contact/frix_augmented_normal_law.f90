@@ -56,17 +56,20 @@ contains
       specs = [penalty_properties(), &
                property_spec_t(name='PENTOL', what='PENTOL', bounded=.true., strict=.true., &
                                bound_message='PENTOL must be positive'), &
-               at_least_one('MAXAUG'), at_least_one('PENGROW'), &
+               at_least_one('MAXAUG', whole=.true.), at_least_one('PENGROW'), &
                property_spec_t(name='PENRATE', what='PENRATE', bounded=.true., strict=.true., &
-                               bound_message='PENRATE must be positive'), &
+                               bounded_above=.true., maximum=1.0_dp, &
+                               bound_message='PENRATE must be > 0 and <= 1'), &
                at_least_one('PENCAP')]
    contains
-      !> A property whose value must be >= 1.
-      function at_least_one(name) result(spec)
+      !> A property whose value must be >= 1 (`whole`: a whole number, default real).
+      function at_least_one(name, whole) result(spec)
          character(len=*), intent(in) :: name
+         logical, intent(in), optional :: whole
          type(property_spec_t) :: spec
          spec = property_spec_t(name=name, what=name, bounded=.true., minimum=1.0_dp, &
                                 bound_message=name//' must be at least 1')
+         if (present(whole)) spec%whole = whole
       end function at_least_one
    end function augmented_properties
 

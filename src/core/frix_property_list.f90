@@ -4,10 +4,11 @@
 !> value) is appended to one error, one line each, prefixed by the list's owner (the keyword of
 !> the law), so that all of them are reported at once.
 !> A property_spec_t describes one property a registry entry takes (name, whether whole, lower
-!> bound and the deck's message for a value beyond it, default), so that a deck reader can read
-!> any registered law's or element's properties without naming them.
+!> and upper bound and the deck's message for a value beyond them, default), so that a deck
+!> reader can read any registered law's or element's properties without naming them and report
+!> a value out of range at its token.
 module frix_property_list
-   use frix_kinds, only: dp
+   use frix_kinds, only: dp, i8
    use frix_error, only: error_t, append_error, fatal_error
    use frix_strings, only: to_string, to_upper
    implicit none
@@ -25,6 +26,8 @@ module frix_property_list
       logical :: bounded = .false.              !! value >= minimum (> minimum if strict) required
       real(dp) :: minimum = 0.0_dp
       logical :: strict = .false.
+      logical :: bounded_above = .false.        !! value <= maximum required
+      real(dp) :: maximum = 0.0_dp
       character(len=64) :: bound_message = ''   !! reported when the bound does not hold
       logical :: has_default = .false.          !! value used by restricted_to when not given
       real(dp) :: default = 0.0_dp
@@ -115,16 +118,17 @@ contains
       end do
    end function restricted_to
 
-   !> Whether `value` satisfies the spec's bound.
+   !> Whether `value` satisfies the spec's bounds.
    pure logical function admits(self, value)
       class(property_spec_t), intent(in) :: self
       real(dp), intent(in) :: value
       admits = .true.
+      if (self%bounded_above) admits = value <= self%maximum
       if (.not. self%bounded) return
       if (self%strict) then
-         admits = value > self%minimum
+         admits = admits .and. value > self%minimum
       else
-         admits = value >= self%minimum
+         admits = admits .and. value >= self%minimum
       end if
    end function admits
 
@@ -226,10 +230,25 @@ contains
       if (.not. found) return
       if (abs(real_value) < real(huge(1), dp) .and. real_value == aint(real_value)) then
          value = int(real_value)
+      else if (real_value == aint(real_value)) then
+         call append_error(error, trim(self%owner)//': '//name//' must be a whole number within +-'// &
+                           to_string(huge(1))//', got '//number_text(real_value))
       else
-         call append_error(error, trim(self%owner)//': '//name//' must be a whole number, got '//to_string(real_value))
+         call append_error(error, trim(self%owner)//': '//name//' must be a whole number, got '//number_text(real_value))
       end if
    end subroutine take_integer
+
+   !> A property value for messages: a whole number below 1e18 in full (2147483648), else as
+   !> to_string.
+   pure function number_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      if (abs(value) < 1.0e18_dp .and. value == aint(value)) then
+         text = to_string(int(value, i8))
+      else
+         text = to_string(value)
+      end if
+   end function number_text
 
    !> Whether both lists give the same value to the same names (in any order).
    pure logical function same_as(self, other)

@@ -5,7 +5,7 @@
 module frix_deck_contact
    use frix_kinds, only: dp
    use frix_error, only: error_t
-   use frix_strings, only: to_string, to_upper
+   use frix_strings, only: to_string, to_upper, scientific
    use frix_friction_law, only: friction_law_t
    use frix_normal_contact_law, only: normal_contact_law_t, augmentation_t
    use frix_property_list, only: property_list_t, property_spec_t, joined, spec_names, keyword_index
@@ -54,6 +54,9 @@ module frix_deck_contact
       integer :: stick_token = 0             !! token of STICKTOL's value, 0 if not given
       logical :: predict = .true.            !! PREDICT Yes|No
       integer :: predict_token = 0           !! token of PREDICT's value, 0 if not given
+      !> the laws' properties given (upper case) and the tokens of their values, in line order
+      character(len=32), allocatable :: property_names(:)
+      integer, allocatable :: property_tokens(:)
    end type pair_options_t
 
 contains
@@ -210,6 +213,7 @@ contains
       options%rigid = rigid
       options%method = ''
       options%law = ''
+      allocate (options%property_names(0), options%property_tokens(0))
       do while (ok .and. position <= line%n_tokens())
          word = line%keyword(position)
          position = position + 1
@@ -260,6 +264,8 @@ contains
             call require(reader, ok, options%feature_angle > 0.0_dp .and. options%feature_angle < 180.0_dp, &
                          line, position - 1, 'FEATURE_ANGLE must lie between 0 and 180 degrees (exclusive)')
          case default
+            options%property_names = [character(len=32) :: options%property_names, word]
+            options%property_tokens = [options%property_tokens, position]
             k = keyword_index(spec_names(normal_specs), word)
             if (k > 0) then
                call reader%take_property(line, position, normal_specs(k), options%normal, ok)
@@ -369,6 +375,7 @@ contains
       class(friction_law_t), allocatable :: friction
       type(error_t), allocatable :: error
       character(len=:), allocatable :: method, law
+      integer :: token
       call check_feature_angle(reader, line, options, ok)
       if (.not. ok) return
       pair%passes = options%passes
@@ -377,13 +384,15 @@ contains
       method = options%method
       if (len(method) == 0) method = default_normal_method()
       call create_normal_contact_law(method, options%normal, normal, error)
-      call report_error(reader, line, max(1, options%method_token), error, ok)
+      if (allocated(error)) token = property_token(options, error%message, max(1, options%method_token))
+      call report_error(reader, line, token, error, ok)
       if (ok) call check_rigid_plane(reader, line, options, pair, ok)
       if (.not. ok) return
       law = options%law
       if (len(law) == 0) law = default_friction_law(options%friction)
       call create_pair_friction_law(trim(law), options%friction, friction, error)
-      call report_error(reader, line, max(1, options%law_token), error, ok)
+      if (allocated(error)) token = property_token(options, error%message, max(1, options%law_token))
+      call report_error(reader, line, token, error, ok)
       if (.not. ok) return
       call new_contact_parameters(normal, options%eps_t, options%gap_tolerance, friction, pair%parameters, error, &
                                   automatic_tangential=.not. options%has_eps_t)
@@ -421,6 +430,38 @@ contains
          call check_patch_ring(reader, model, line, token, normals, pair%parameters%feature_angle, &
                                pair%slave_surface, options%normals == normals_default, ok)
    end subroutine set_normals
+
+   !> The token a law's message is about: the value of the property of the line the message
+   !> names first (as a word: "PENRATE must be ...", "unknown property "PENTOL" (valid: EPSN)"),
+   !> else `fallback` (METHOD's or LAW's value: an unknown law, a missing property).
+   pure integer function property_token(options, message, fallback) result(token)
+      type(pair_options_t), intent(in) :: options
+      character(len=*), intent(in) :: message
+      integer, intent(in) :: fallback
+      integer :: k, at, last, first_at
+      token = fallback
+      first_at = len(message) + 1
+      do k = 1, size(options%property_names)
+         at = index(message, trim(options%property_names(k)))
+         if (at == 0 .or. at >= first_at) cycle
+         last = at + len_trim(options%property_names(k)) - 1
+         if (at > 1) then
+            if (word_character(message(at - 1:at - 1))) cycle
+         end if
+         if (last < len(message)) then
+            if (word_character(message(last + 1:last + 1))) cycle
+         end if
+         token = options%property_tokens(k)
+         first_at = at
+      end do
+      ! a property the law does not take: its keyword, not its value
+      if (token /= fallback .and. index(message, 'unknown property') > 0) token = token - 1
+   contains
+      pure logical function word_character(c)
+         character(len=1), intent(in) :: c
+         word_character = verify(c, 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_') == 0
+      end function word_character
+   end function property_token
 
    !> Report `error`, if allocated, at token `position` (ok false then).
    subroutine report_error(reader, line, position, error, ok)
@@ -576,13 +617,12 @@ contains
       end if
    end function factor_text
 
-   !> A penalty or stiffness for messages: 5 significant digits, e.g. 2.6923E+04.
+   !> A penalty or stiffness for messages: 5 significant digits, e.g. 2.6923E+04 (1.0000E-300
+   !> beyond two exponent digits).
    pure function penalty_text(value) result(text)
       real(dp), intent(in) :: value
       character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(es11.4e2)') value
-      text = trim(adjustl(buffer))
+      text = scientific(value, 4)
    end function penalty_text
 
    !> `pairs` with `pair` appended, in a longer array (an array constructor would leak the

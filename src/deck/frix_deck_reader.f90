@@ -8,7 +8,8 @@
 !> reference points backwards: controls, curves, materials; the mesh (MESH FILE, NODE COORDS,
 !> element lines of STRUCTURE ELEMENTS, MESH BLOCK, then the SET lines of STRUCTURE ELEMENTS);
 !> NODE SETS, SURFACES; conditions and loads; STEPS; RESULTS; then, in a valid model (mesh,
-!> materials and element blocks complete), the automatic contact penalties. Each section has its reader in
+!> materials and element blocks complete), the automatic contact penalties, the ties' nodes
+!> and the supports against rigid-body motion (frix_deck_supports). Each section has its reader in
 !> a module of its own (frix_deck_controls, _properties, _mesh, _loads, _contact, _results).
 module frix_deck_reader
    use frix_error, only: error_t
@@ -25,6 +26,7 @@ module frix_deck_reader
    use frix_deck_loads, only: read_dirichlet, read_neumann, read_body_forces
    use frix_deck_contact, only: read_contact_pairs, set_automatic_penalties
    use frix_deck_results, only: read_results
+   use frix_deck_supports, only: check_ties_and_supports
    implicit none
    private
 
@@ -69,6 +71,7 @@ contains
       call read_results(reader, model)
       call validate_model(reader, model)
       if (.not. reader%diagnostics%has_errors()) call set_automatic_penalties(reader, model)
+      if (.not. reader%diagnostics%has_errors()) call check_ties_and_supports(reader, model)
 
       call reader%diagnostics%finish(error)
    end subroutine read_deck

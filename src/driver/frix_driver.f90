@@ -17,7 +17,7 @@
 module frix_driver
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, padded, fixed_point
    use frix_model, only: model_t
    use frix_deck_reader, only: read_deck
    use frix_analysis_state, only: analysis_state_t, create_analysis_state, commit_state, &
@@ -31,9 +31,7 @@ module frix_driver
    use frix_increment_results, only: increment_results_t
    use frix_linear_solver, only: wall_clock_seconds
    use frix_external_loads, only: prescribed_displacements
-   use frix_support_check, only: check_rigid_body_support
    use frix_state_restart, only: read_state_restart
-   use frix_mesh, only: hex8_face_nodes
    use frix_hdf5_file, only: hdf5_finalize
    use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
@@ -136,8 +134,6 @@ contains
       call setup_newton(model, state, context, error)
       if (allocated(error)) return
       call prescribed_displacements(model, 0.0_dp, context%fixed, context%prescribed)
-      call check_rigid_body_support(model, context%fixed, error, contact_nodes(model))
-      if (allocated(error)) return
       context%quiet = options%quiet
       first_step = 1
       if (allocated(options%restart_path)) then
@@ -343,7 +339,7 @@ contains
       character(len=64) :: label
       real(dp) :: target_time
       repeat = .false.
-      write (label, '("step",i3,"  incr",i4)') control%step, control%increment + 1
+      label = 'step'//padded(to_string(control%step), 3)//'  incr'//padded(to_string(control%increment + 1), 4)
       if (control%path_control .and. .not. control%landing) then
          associate (path => control%path, final_target => model%steps(control%step)%path_target)
             path%target = state%committed_u(path%equation) + control%path_increment*control%size_now/control%nominal
@@ -583,40 +579,22 @@ contains
       integer, intent(in) :: iterations
       real(dp) :: left, end_time
       end_time = real(size(model%steps), dp)
-      write (*, '(2x,"converged in",i4," iterations,",f9.2," s;  t =",f9.4," of",f6.1,'// &
-             '" (",f5.1," %)")', advance='no') iterations, seconds, time, end_time, 100.0_dp*time/end_time
-      ! no estimate when the load factor decreased (path following past a limit point)
+      write (*, '(a)', advance='no') '  converged in'//padded(to_string(iterations), 4)//' iterations,'// &
+         padded(fixed_point(seconds, 2), 9)//' s;  t ='//padded(fixed_point(time, 4), 9)//' of'// &
+         padded(fixed_point(end_time, 1), 6)//' ('//padded(fixed_point(100.0_dp*time/end_time, 1), 5)//' %)'
+      ! no estimate when the load factor decreased (path following past a limit point) or
+      ! when the rate gives none (a pseudo time past the end, a step of zero length)
       if (time > previous_time) then
          left = seconds*(end_time - time)/(time - previous_time)
-         write (*, '(",  about",f10.1," s left")', advance='no') left
+         if (left >= 0.0_dp .and. left < 1.0e9_dp) then
+            write (*, '(a)', advance='no') ',  about'//padded(fixed_point(left, 1), 10)//' s left'
+         else if (left >= 1.0e9_dp) then
+            write (*, '(a)', advance='no') ',  more than 1e9 s left'
+         end if
       end if
       write (*, '(a)') ''
       flush (6)
    end subroutine print_increment_done
-
-   !> Nodes of the surfaces named in contact pairs (bodies held by contact).
-   function contact_nodes(model) result(in_contact)
-      type(model_t), intent(in) :: model
-      logical, allocatable :: in_contact(:)
-      integer :: p
-      allocate (in_contact(model%mesh%n_nodes), source=.false.)
-      if (.not. allocated(model%contact_pairs)) return
-      do p = 1, size(model%contact_pairs)
-         call mark_surface(model%contact_pairs(p)%slave_surface)
-         call mark_surface(model%contact_pairs(p)%master_surface)   ! 0: rigid plane
-      end do
-   contains
-      subroutine mark_surface(surface)
-         integer, intent(in) :: surface
-         integer :: k
-         if (surface == 0) return
-         associate (faces => model%mesh%surfaces(surface))
-            do k = 1, size(faces%elements)
-               in_contact(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(k)), faces%elements(k))) = .true.
-            end do
-         end associate
-      end subroutine mark_surface
-   end function contact_nodes
 
    !> A pseudo time with 10 significant digits.
    pure function time_text(time) result(text)

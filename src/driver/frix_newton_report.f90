@@ -2,6 +2,7 @@
 !> per-iteration norms the listing and the progress lines show, the reason of a failure.
 module frix_newton_report
    use frix_kinds, only: dp
+   use frix_strings, only: to_string, padded
    implicit none
    private
 
@@ -60,13 +61,14 @@ contains
       integer, intent(in) :: iteration, active, slipping
       logical, intent(in) :: contact
       if (contact) then
-         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",a,"  |r|/ref=",a,'// &
-                '"  energy=",a,"  contact",i6,"  slip",i6)') label, time, iteration, norm_text(residual_norm), &
-            norm_text(relative_norm), norm_text(energy), active, slipping
+         write (*, '(2x,a,"  t=",es12.5,a,"  |r|=",a,"  |r|/ref=",a,'// &
+                '"  energy=",a,a)') label, time, '  iter'//padded(to_string(iteration), 3), norm_text(residual_norm), &
+            norm_text(relative_norm), norm_text(energy), &
+            '  contact'//padded(to_string(active), 6)//'  slip'//padded(to_string(slipping), 6)
       else
-         write (*, '(2x,a,"  t=",es12.5,"  iter",i3,"  |r|=",a,"  |r|/ref=",a,'// &
-                '"  energy=",a)') label, time, iteration, norm_text(residual_norm), norm_text(relative_norm), &
-            norm_text(energy)
+         write (*, '(2x,a,"  t=",es12.5,a,"  |r|=",a,"  |r|/ref=",a,'// &
+                '"  energy=",a)') label, time, '  iter'//padded(to_string(iteration), 3), norm_text(residual_norm), &
+            norm_text(relative_norm), norm_text(energy)
       end if
       flush (6)
    end subroutine print_progress

@@ -10,6 +10,7 @@ module frix_results_collection
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string, to_lower
    use frix_finite_check, only: first_non_finite
+   use frix_field_recovery, only: cell_average, nodal_extrapolated, von_mises_field
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t, reported_displacement
    use frix_newton_solver, only: newton_context_t
@@ -84,6 +85,8 @@ contains
       if (allocated(error)) return
       call check_element_finite(model, results, 'stress', results%stress, error)
       if (.not. allocated(error)) call check_element_finite(model, results, 'strain', results%strain, error)
+      if (.not. allocated(error)) call check_recovered_finite(model, results, 'stress', results%stress, error)
+      if (.not. allocated(error)) call check_recovered_finite(model, results, 'strain', results%strain, error)
       if (allocated(error)) return
       results%alpha = state%committed_alpha
       results%history = state%committed_history
@@ -237,6 +240,52 @@ contains
       call fatal_error(error, not_written(results)//'the '//quantity//' of element '// &
                        to_string(model%mesh%element_ids(location(3)))//' is not finite')
    end subroutine check_element_finite
+
+   !> check_element_finite for what the writers derive from an integration-point field
+   !> (frix_field_recovery): the element means, the values extrapolated to the nodes and, for
+   !> the stress, the von Mises stress of both, which can overflow where the points' values do
+   !> not (E = 1e200 at 1 % strain: stresses of 1e198, their squares beyond the range of reals).
+   subroutine check_recovered_finite(model, results, quantity, gp, error)
+      type(model_t), intent(in) :: model
+      type(increment_results_t), intent(in) :: results
+      character(len=*), intent(in) :: quantity   !! 'stress' or 'strain'
+      real(dp), intent(in) :: gp(:, :, :)        !! (6, 8, n_elements)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: cell(:, :), nodal(:, :)
+      allocate (cell(6, model%mesh%n_elements), nodal(6, model%mesh%n_nodes))
+      call cell_average(gp, cell)
+      call check_columns(model, results, 'element', quantity//' (element mean)', cell, error)
+      if (allocated(error)) return
+      call nodal_extrapolated(model%mesh%connectivity, gp, nodal, error)
+      if (allocated(error)) return
+      call check_columns(model, results, 'node', quantity//' (extrapolated to the nodes)', nodal, error)
+      if (allocated(error) .or. quantity /= 'stress') return
+      call check_columns(model, results, 'element', 'von Mises stress (element mean)', &
+                         reshape(von_mises_field(cell), [1, size(cell, 2)]), error)
+      if (allocated(error)) return
+      call check_columns(model, results, 'node', 'von Mises stress (extrapolated to the nodes)', &
+                         reshape(von_mises_field(nodal), [1, size(nodal, 2)]), error)
+   end subroutine check_recovered_finite
+
+   !> An error naming the element or node (`what`) of the first column of `values` with a
+   !> non-finite entry.
+   subroutine check_columns(model, results, what, quantity, values, error)
+      type(model_t), intent(in) :: model
+      type(increment_results_t), intent(in) :: results
+      character(len=*), intent(in) :: what, quantity
+      real(dp), intent(in) :: values(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: location(2), id
+      if (all(ieee_is_finite(values))) return
+      location = findloc(ieee_is_finite(values), .false.)
+      if (what == 'node') then
+         id = model%mesh%node_ids(location(2))
+      else
+         id = model%mesh%element_ids(location(2))
+      end if
+      call fatal_error(error, not_written(results)//'the '//quantity//' at '//what//' '//to_string(id)// &
+                       ' is not finite ('//to_string(values(location(1), location(2)))//')')
+   end subroutine check_columns
 
    !> check_nodal_finite for the contact table of one pass (gap, pressure, traction, slip).
    subroutine check_contact_finite(model, results, table, error)

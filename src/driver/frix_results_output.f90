@@ -336,7 +336,8 @@ contains
          call model%materials(m)%law%elastic_tangent(tangent)
          lambda = tangent(1, 2)
          mu = 0.5_dp*(tangent(1, 1) - tangent(1, 2))
-         elastic(1, m) = mu*(3.0_dp*lambda + 2.0_dp*mu)/(lambda + mu)
+         ! E = mu (3 lambda + 2 mu)/(lambda + mu), written so that no intermediate exceeds E
+         elastic(1, m) = mu*(3.0_dp - mu/(lambda + mu))
          elastic(2, m) = lambda/(2.0_dp*(lambda + mu))
       end do
       call self%pos3d%open(base//'.pos', model%title, model%mesh, error, elastic, &

@@ -12,7 +12,7 @@
 module frix_listing_writer
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, padded
    use frix_mesh, only: mesh_t
    use frix_text_output, only: text_file_t
    implicit none
@@ -89,8 +89,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=80) :: line
       integer :: stat
-      write (line, '(a,i6,a,i6,a,es18.9e3,a,i6)', iostat=stat) 'STEP', step, '  INCREMENT', increment, &
-         '  TIME', time, '  ITERATIONS', iterations
+      write (line, '(a,es18.9e3,a)', iostat=stat) 'STEP'//padded(to_string(step), 6)//'  INCREMENT'// &
+         padded(to_string(increment), 6)//'  TIME', time, '  ITERATIONS'//padded(to_string(iterations), 6)
       call write_lines(self, [line], error)
    end subroutine write_increment_header
 

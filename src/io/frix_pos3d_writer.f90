@@ -37,6 +37,7 @@ module frix_pos3d_writer
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_field_recovery, only: nodal_extrapolated, von_mises_field
+   use frix_finite_check, only: first_non_finite
    use frix_text_output, only: real_edit, text_file_t
    implicit none
    private
@@ -111,6 +112,12 @@ contains
          end if
          if (any(element_material < 1 .or. element_material > size(materials, 2))) then
             call fatal_error(error, 'POS3D output: element material index outside 1..'//to_string(size(materials, 2)))
+            return
+         end if
+         if (first_non_finite(reshape(materials, [size(materials)])) > 0) then
+            call fatal_error(error, 'POS3D output: the material block''s E or nu of material number '// &
+                             to_string((first_non_finite(reshape(materials, [size(materials)])) + 1)/2)// &
+                             ' (in deck order) is not finite (beyond the range of real numbers)')
             return
          end if
          self%materials = materials

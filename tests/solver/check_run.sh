@@ -4,8 +4,9 @@
 # Passes when: the exit status equals EXPECTED_STATUS, stderr+stdout contain every fragment
 # (several are separated by '|'),
 # there is no Fortran runtime error or backtrace, every listed result file exists (the
-# results of converged increments are kept when a run fails), and no text result file holds
-# NaN or an infinity (the finite-value guard, docs/solver.md).
+# results of converged increments are kept when a run fails), no text result file holds
+# NaN or an infinity (the finite-value guard, docs/solver.md), and neither the output nor a
+# result file holds the asterisks of a number too wide for its edit descriptor.
 set -u
 frix=$1; deck=$2; expected_status=$3; fragment=$4; shift 4
 out=$(mktemp -d)
@@ -27,6 +28,8 @@ if grep -qE 'Fortran runtime error|Backtrace|SIGSEGV|ERROR STOP' "$out/stdout" "
 fi
 nonfinite=$(find "$out" -type f ! -name stdout ! -name stderr -exec grep -IliE '(^|[^a-z])(nan|inf|infinity)([^a-z]|$)' {} +)
 if [ -n "$nonfinite" ]; then echo "FAIL: NaN or Inf in $nonfinite"; fail=1; fi
+overflowed=$(find "$out" -type f -exec grep -IlF '*****' {} +)
+if [ -n "$overflowed" ]; then echo "FAIL: a number printed as asterisks in $overflowed"; fail=1; fi
 for f in "$@"; do
   if [ ! -s "$out/$f" ]; then echo "FAIL: result file $f missing"; fail=1; fi
 done

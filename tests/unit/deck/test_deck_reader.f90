@@ -13,7 +13,7 @@ module test_deck_reader
    public :: collect_deck_reader
 
    character(len=*), parameter :: nl = new_line('a')
-   !> A 2 x 1 x 1 BLOCK bar, clamped at x = 0, pulled at x = 2 (the block_tension example).
+   !> A 2 x 1 x 1 BLOCK bar, clamped at x = 0 (in y at node 1), pulled at x = 2 (the block_tension example).
    character(len=*), parameter :: valid_deck = &
       ' title line'//nl// &
       '---------------STATIC'//nl// &
@@ -30,6 +30,7 @@ module test_deck_reader
       'SURF outside BOX -1 -1 -1 3 3 3'//nl// &
       '---------------DIRICHLET CONDITIONS'//nl// &
       'SET bar_xmin DOF 1 0 1 VAL 0 0 0.5 CURVE 0 0 4'//nl// &
+      'NODE 1 DOF 0 1 0 VAL 0 0 0'//nl// &
       '---------------NEUMANN CONDITIONS'//nl// &
       'SURF bar_xmax PRESSURE -1.0 CURVE 4 FOLLOWER'//nl// &
       'NODE 3 FORCE 0 0 -2'//nl// &
@@ -122,8 +123,9 @@ contains
       if (allocated(error)) return
       call check(error, model%controls%max_iterations == 12 .and. model%title == ' title line', 'controls and title')
       if (allocated(error)) return
-      ! DOF 1 0 1: two records (x and z) on the 4 nodes of x = 0, the z one with curve 4 = index 1
-      call check(error, size(model%dirichlet) == 2, 'one record per flagged DOF')
+      ! DOF 1 0 1: two records (x and z) on the 4 nodes of x = 0, the z one with curve 4 = index 1;
+      ! then node 1 held in y (the supports check)
+      call check(error, size(model%dirichlet) == 3, 'one record per flagged DOF')
       if (allocated(error)) return
       call check(error, model%dirichlet(1)%component == 1 .and. model%dirichlet(2)%component == 3 .and. &
                  model%dirichlet(2)%curve == 1 .and. model%dirichlet(1)%curve == 0 .and. &
@@ -185,11 +187,11 @@ contains
       call read_deck('test_deck_errors.dck', model, deck_error)
       call check_message_contains(error, deck_error, 'test_deck_errors.dck:3:25: error: expected an integer for MAXITER near "x"')
       if (allocated(error)) return
-      call check_message_contains(error, deck_error, 'test_deck_errors.dck:21:16: error: NUMSTEP must be positive')
+      call check_message_contains(error, deck_error, 'test_deck_errors.dck:22:16: error: NUMSTEP must be positive')
       if (allocated(error)) return
       call check_message_contains(error, deck_error, 'missing END section')
       if (allocated(error)) return
-      call check(error, index(deck_error%message, ':3:') < index(deck_error%message, ':21:'), 'sorted by line')
+      call check(error, index(deck_error%message, ':3:') < index(deck_error%message, ':22:'), 'sorted by line')
       if (allocated(error)) return
       call check_message_contains(error, deck_error, '3 error(s) in the deck')
    end subroutine test_all_errors
