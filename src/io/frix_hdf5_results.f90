@@ -238,11 +238,7 @@ contains
       class(hdf5_results_t), intent(inout) :: self
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:)
-      type(named_array_t) :: item
-      item%name = name
-      item%reals = reshape(values, [1, size(values)])
-      item%rank_one = .true.
-      call append_contact(self, item)
+      call append_reals(self%contact, name, reshape(values, [1, size(values)]), .true.)
    end subroutine add_contact_real_1
 
    !> Add a real array values(n_components, n) (e.g. per slave node traction (3, n)) to the
@@ -251,10 +247,7 @@ contains
       class(hdf5_results_t), intent(inout) :: self
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:, :)
-      type(named_array_t) :: item
-      item%name = name
-      item%reals = values
-      call append_contact(self, item)
+      call append_reals(self%contact, name, values, .false.)
    end subroutine add_contact_real_2
 
    !> Add an integer array values(n) (e.g. slave node numbers, stick/slip status) to the
@@ -267,7 +260,7 @@ contains
       item%name = name
       item%integers = reshape(values, [1, size(values)])
       item%rank_one = .true.
-      call append_contact(self, item)
+      call append_item(self%contact, item)
    end subroutine add_contact_integer_1
 
    !> Add a named scalar per integration point, values(n_points, n_elements) (a material's
@@ -277,10 +270,7 @@ contains
       class(hdf5_results_t), intent(inout) :: self
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:, :)
-      type(named_array_t) :: item
-      item%name = name
-      item%reals = values
-      call append_item(self%fields, item)
+      call append_reals(self%fields, name, values, .false.)
    end subroutine add_point_field
 
    !> Add a real array values(n_components, n) of the increment control (a restart's increment
@@ -290,18 +280,22 @@ contains
       class(hdf5_results_t), intent(inout) :: self
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: values(:, :)
+      call append_reals(self%control, name, values, size(values, 1) == 1)
+   end subroutine add_control_array
+
+   !> A real array values(n_components, n) named `name` at the end of `items` (written as a
+   !> 1-D dataset when `rank_one`).
+   subroutine append_reals(items, name, values, rank_one)
+      type(named_array_t), allocatable, intent(inout) :: items(:)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: values(:, :)
+      logical, intent(in) :: rank_one
       type(named_array_t) :: item
       item%name = name
       item%reals = values
-      item%rank_one = size(values, 1) == 1
-      call append_item(self%control, item)
-   end subroutine add_control_array
-
-   subroutine append_contact(self, item)
-      type(hdf5_results_t), intent(inout) :: self
-      type(named_array_t), intent(inout) :: item
-      call append_item(self%contact, item)
-   end subroutine append_contact
+      item%rank_one = rank_one
+      call append_item(items, item)
+   end subroutine append_reals
 
    !> items = [items, item], moving item's arrays (an array constructor of this type would
    !> leak their copies with gfortran 12).
