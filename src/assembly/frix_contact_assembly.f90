@@ -55,6 +55,11 @@ module frix_contact_assembly
       logical :: tied = .false.                   !! some pair is a TIE (frix_tie_constraints)
       !> friction or smoothed normals: the contact tangent is unsymmetric
       logical :: unsymmetric = .false.
+      !> the tangent of the last assembly holds a node clamped onto an edge of its face whose
+      !> tangent is unsymmetric beyond round-off (function unsymmetric): the gap of a clamped
+      !> closest point is not a distance, so even a frictionless facet pass is then
+      !> unsymmetric (docs/contact.md, "Edges and corners")
+      logical :: clamped_unsymmetric = .false.
       !> factor on the pressure every friction law sees, i.e. on mu for Coulomb; 1 except in
       !> the stages of the driver's friction continuation
       real(dp) :: friction_scale = 1.0_dp
@@ -312,6 +317,7 @@ contains
 
       touching_stiffness = .false.
       if (present(predictor)) touching_stiffness = predictor
+      if (present(matrix)) system%clamped_unsymmetric = .false.
       do p = 1, size(system%passes)
          if (allocated(system%passes(p)%interface_force)) system%passes(p)%interface_force = 0.0_dp
       end do
@@ -385,13 +391,24 @@ contains
                   fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + force(3*a - 2:3*a)
                end do
                if (pass%partner > 0) call add_interface_force(system%passes, p, i, nodes(:5), force(:15))
-               if (present(matrix)) call matrix%add_element(nodes(:n_nodes), tangent(:n, :n))
+               if (present(matrix)) then
+                  call matrix%add_element(nodes(:n_nodes), tangent(:n, :n))
+                  if (pass%result(i)%clamped .and. .not. system%clamped_unsymmetric) &
+                     system%clamped_unsymmetric = unsymmetric(tangent(:n, :n))
+               end if
                if (allocated(x_anchor_face)) deallocate (x_anchor_face)
                if (allocated(x_ring)) deallocate (x_ring, patch)
             end do
          end associate
       end do
    end subroutine assemble_contact
+
+   !> Whether a node's tangent is unsymmetric beyond round-off: max |T - T'| > sqrt(eps) max |T|
+   !> (an error of that size in the Newton step is below any residual tolerance).
+   pure logical function unsymmetric(tangent)
+      real(dp), intent(in) :: tangent(:, :)
+      unsymmetric = maxval(abs(tangent - transpose(tangent))) > sqrt(epsilon(1.0_dp))*maxval(abs(tangent))
+   end function unsymmetric
 
    !> The pair's parameters with eps_N and eps_T times the pass's penalty factors (augmented
    !> passes whose penalties grew: frix_contact_augmentation's grow_penalties).

@@ -166,6 +166,9 @@ contains
          call evaluate_equilibrium(model, context, state, current_time, .true., residual_norm, reference, &
                                    report%failure, error, predictor=iteration == 0)
          if (allocated(error) .or. allocated(report%failure)) return
+         if (context%symmetric .and. state%has_contact) then
+            if (state%contact%clamped_unsymmetric) call context%solver%expect_unsymmetric()
+         end if
          call context%matrix%get_diagonal(context%diagonal)
          call record_iteration(context, state, label, current_time, iteration, residual_norm, reference, &
                                energy, report)

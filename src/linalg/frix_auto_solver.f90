@@ -3,8 +3,10 @@
 !> CHOLMOD finds the matrix not positive definite (past a limit point, or with large
 !> penetrations in the first contact iterations), the factorization is repeated with UMFPACK,
 !> which stays in use until the end of the increment; the next increment (begin_increment)
-!> tries CHOLMOD again. Both keep their symbolic analyses. Any other failure (too large, out of
-!> memory, a singular matrix) is reported as it is.
+!> tries CHOLMOD again. The same holds from the factorization on where the Newton loop says the
+!> matrix is unsymmetric (expect_unsymmetric: CHOLMOD reads only the upper triangle, whose
+!> symmetric completion is not the tangent). Both keep their symbolic analyses. Any other
+!> failure (too large, out of memory, a singular matrix) is reported as it is.
 !>
 !> The statistics fields of the type are CHOLMOD's; add_totals adds UMFPACK's, and the
 !> description names the factorizations done by UMFPACK.
@@ -31,6 +33,7 @@ module frix_auto_solver
       procedure :: solve
       procedure :: release
       procedure :: begin_increment
+      procedure :: expect_unsymmetric
       procedure :: description
       procedure :: add_totals
    end type auto_solver_t
@@ -87,15 +90,22 @@ contains
       solver%use_fallback = .false.
    end subroutine begin_increment
 
+   !> UMFPACK for the rest of the increment.
+   subroutine expect_unsymmetric(solver)
+      class(auto_solver_t), intent(inout) :: solver
+      solver%use_fallback = .true.
+      if (.not. allocated(solver%fallback)) allocate (solver%fallback)
+   end subroutine expect_unsymmetric
+
    !> 'CHOLMOD', or 'CHOLMOD (UMFPACK in N factorizations where the matrix was not positive
-   !> definite)' once UMFPACK was needed.
+   !> definite or unsymmetric)' once UMFPACK was needed.
    function description(solver) result(text)
       class(auto_solver_t), intent(in) :: solver
       character(len=:), allocatable :: text
       text = solver%primary%name()
       if (allocated(solver%fallback)) text = text//' (UMFPACK in '// &
                                              to_string(solver%fallback%n_factorizations)// &
-                                             ' factorizations where the matrix was not positive definite)'
+                                             ' factorizations where the matrix was not positive definite or unsymmetric)'
    end function description
 
    subroutine add_totals(solver, analyse, factorize, solve, factorizations)

@@ -55,6 +55,9 @@ module frix_linear_solver
       procedure(release_interface), deferred :: release
       !> Called by the Newton loop at the start of every load increment; no-op by default.
       procedure :: begin_increment
+      !> Called by the Newton loop when the matrix about to be factorized is unsymmetric
+      !> although the system was expected symmetric; no-op by default.
+      procedure :: expect_unsymmetric
       !> What the run's statistics print after "linear solver": the name by default.
       procedure :: description
       !> Adds the solver's (and any inner solver's) accumulated seconds and factorizations.
@@ -101,6 +104,10 @@ contains
    subroutine begin_increment(solver)
       class(linear_solver_t), intent(inout) :: solver
    end subroutine begin_increment
+
+   subroutine expect_unsymmetric(solver)
+      class(linear_solver_t), intent(inout) :: solver
+   end subroutine expect_unsymmetric
 
    function description(solver) result(text)
       class(linear_solver_t), intent(in) :: solver
