@@ -30,7 +30,6 @@ module frix_driver
    use frix_results_collection, only: collect_results
    use frix_increment_results, only: increment_results_t
    use frix_linear_solver, only: wall_clock_seconds
-   use frix_external_loads, only: prescribed_displacements
    use frix_state_restart, only: read_state_restart
    use frix_hdf5_file, only: hdf5_finalize
    use frix_stop_request, only: stop_requested, stop_signal_name
@@ -133,7 +132,6 @@ contains
       if (allocated(error)) return
       call setup_newton(model, state, context, error)
       if (allocated(error)) return
-      call prescribed_displacements(model, 0.0_dp, context%fixed, context%prescribed)
       context%quiet = options%quiet
       first_step = 1
       if (allocated(options%restart_path)) then

@@ -82,6 +82,24 @@ contains
                  to_string(residual)//' >= '//to_string(residual_tolerance))
    end subroutine solve_and_check
 
+   !> The node-block matrix of a 4 x 3 x 3 brick (values of `kind` from the random `state`)
+   !> factorized by `solver` and a random system solved and checked (solve_and_check).
+   subroutine solve_small_cube(solver, kind, matrix, connectivity, n_nodes, state, error)
+      class(linear_solver_t), intent(inout) :: solver
+      integer, intent(in) :: kind
+      type(sparse_matrix_t), intent(out) :: matrix
+      integer, allocatable, intent(out) :: connectivity(:, :)
+      integer, intent(out) :: n_nodes
+      integer(i8), intent(inout) :: state
+      type(error_t), allocatable, intent(out) :: error
+      call cube_connectivity(4, 3, 3, connectivity, n_nodes)
+      call matrix%create_node_block_pattern(n_nodes, connectivity)
+      call assemble(matrix, connectivity, kind, state)
+      call solver%factorize(matrix, error)
+      if (allocated(error)) return
+      call solve_and_check(solver, matrix, state, error)
+   end subroutine solve_small_cube
+
    !> Factorize, solve; new values with the same pattern must not re-analyse; a rebuilt
    !> pattern (new pattern_id) must.
    subroutine check_refactorize_reanalyse(keyword, kind, error)
@@ -95,13 +113,8 @@ contains
       integer(i8) :: state
       call create_linear_solver(keyword, solver, error)
       if (allocated(error)) return
-      call cube_connectivity(4, 3, 3, connectivity, n_nodes)
-      call matrix%create_node_block_pattern(n_nodes, connectivity)
       state = 31337
-      call assemble(matrix, connectivity, kind, state)
-      call solver%factorize(matrix, error)
-      if (allocated(error)) return
-      call solve_and_check(solver, matrix, state, error)
+      call solve_small_cube(solver, kind, matrix, connectivity, n_nodes, state, error)
       if (allocated(error)) return
       call assemble(matrix, connectivity, kind, state)
       call solver%factorize(matrix, error)
@@ -162,13 +175,8 @@ contains
       integer, allocatable :: connectivity(:, :)
       integer :: n_nodes
       integer(i8) :: state
-      call cube_connectivity(4, 3, 3, connectivity, n_nodes)
-      call matrix%create_node_block_pattern(n_nodes, connectivity)
       state = 77
-      call assemble(matrix, connectivity, unsymmetric, state)
-      call solver%factorize(matrix, error)
-      if (allocated(error)) return
-      call solve_and_check(solver, matrix, state, error)
+      call solve_small_cube(solver, unsymmetric, matrix, connectivity, n_nodes, state, error)
       if (allocated(error)) return
       call check(error, nint(solver%info(19)) == 3 .and. nint(solver%info(20)) == 3 .and. &
                  nint(solver%info(81)) == 0, 'defaults: symmetric strategy, METIS, no refinement; Info '// &
