@@ -31,6 +31,19 @@ module frix_contact_search
    public :: assign_faces, initial_anchors, plane_anchors, current_nodes, face_nodal_normals
 
    real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
+   !> Facet search (nearest_face): the node's current face is kept against a nearer face whose
+   !> normal at its closest point is within coplanar_angle of the current face's, unless that
+   !> face is nearer by more than face_hysteresis of the current face's distance. Two such
+   !> faces are one plane to within the angle, and either gives the node nearly the same force
+   !> (they differ by p A x angle); where a load dishes the master under a slab, the faces on
+   !> either side of an edge tilt towards each other by 1e-5 to 1e-4 rad, each face's push along
+   !> its own normal left the node nearer the other, and a node over that edge changed face at
+   !> every iteration: Newton froze at a relative residual of 1e-5 and no increment converged
+   !> (tests/contact_robustness, edge_wide; a margin of 1e-5 of the distance was too small).
+   !> Faces meeting at a real angle (a faceted pipe or cavity: 360 / n degrees) keep the strict
+   !> nearest-face rule: there the choice decides the force's direction.
+   real(dp), parameter :: face_hysteresis = 1.0e-3_dp
+   real(dp), parameter :: coplanar_angle = 1.0e-2_dp   !! rad
    integer, parameter :: max_cells = 200              !! most grid cells along an axis
    !> The extension zone of a free edge of the master surface, as a fraction of the face's length
    !> across that edge: a slave node up to this far beyond the edge still gets the face (so that
@@ -142,11 +155,15 @@ contains
       type(contact_pass_t), intent(in) :: pass
       type(master_state_t), intent(inout) :: master
       type(slave_query_t), intent(in) :: query
-      real(dp) :: x_face(3, 4), xi(2), closest(3), distance, gap, best
+      real(dp) :: x_face(3, 4), xi(2), closest(3), normal(3), distance, gap, best
+      real(dp) :: best_normal(3), current_normal(3), current_distance
       integer :: k, f, c, best_face, n_candidates
       logical :: fixed(2)
       best = 0.5_dp*huge(1.0_dp)   ! best*(1 + tie_tolerance) must not overflow
       best_face = 0
+      best_normal = 0.0_dp
+      current_normal = 0.0_dp
+      current_distance = -1.0_dp   ! the current face is no candidate
       face = 0
       c = grid_cell(master%grid, query%x_slave)
       if (c == 0) return
@@ -160,7 +177,8 @@ contains
          distance = norm2(query%x_slave - closest)
          n_candidates = n_candidates + 1
          master%candidates(n_candidates) = candidate_t(f, distance, n_candidates)
-         gap = dot_product(query%x_slave - closest, face_normal(x_face, xi))
+         normal = face_normal(x_face, xi)
+         gap = dot_product(query%x_slave - closest, normal)
          if (gap > pass%band) cycle
          ! beyond the master surface's boundary by more than the extension zone: not this
          ! face's (another face may still hold the node; a tie decides at its boundary by its
@@ -168,9 +186,18 @@ contains
          if (.not. pass%tied) then
             if (beyond_free_edge(x_face, pass%free_edge(:, f), query%x_slave, xi, fixed)) cycle
          end if
+         if (f == query%current) then
+            current_distance = distance
+            current_normal = normal
+         end if
          call keep_nearer(f, distance, query%current, best, best_face)
+         if (best_face == f) best_normal = normal
       end do
       face = best_face
+      if (current_distance >= 0.0_dp .and. best_face /= query%current) then
+         if (current_distance*(1.0_dp - face_hysteresis) <= best .and. &
+             dot_product(current_normal, best_normal) >= cos(coplanar_angle)) face = query%current
+      end if
       ! smoothed normals: the nearest face whose normal projection lies inside it, else
       ! (beyond a free edge of the master surface, or no projection) the nearest face
       if (pass%smooth) then
