@@ -56,6 +56,19 @@ module frix_newton_solver
       real(dp) :: step_end = 1.0_dp     !! between them (exact for loads linear in the step)
    end type path_constraint_t
 
+   !> The contact line search's acceptance level over an increment's Newton steps: the
+   !> weighted mean C_k = (eta Q_k-1 C_k-1 + |r_k|) / Q_k, Q_k = eta Q_k-1 + 1, of the residual
+   !> norms |r_k| at their starts (Zhang & Hager, "A nonmonotone line search technique and its
+   !> application to unconstrained optimization", SIAM J. Optim. 14 (2004) 1043-1056, with
+   !> eta = nonmonotone_weight). C_k >= |r_k| while the residual falls: a step may raise the
+   !> residual a little above the last one, not above the mean of the earlier ones.
+   type :: acceptance_level_t
+      real(dp) :: level = 0.0_dp
+      real(dp) :: weight = 0.0_dp   !! Q_k; 0 before the first step
+   contains
+      procedure :: include => include_step
+   end type acceptance_level_t
+
    !> Everything the iterations need that outlives one increment.
    type :: newton_context_t
       type(sparse_matrix_t) :: matrix
@@ -91,6 +104,9 @@ module frix_newton_solver
    integer, parameter :: outcome_iterate = 0, outcome_converged = 1, outcome_failed = 2, outcome_released = 3
    !> iterations the report's log holds at first; it doubles when MAXITER allows more
    integer, parameter :: initial_log_length = 64
+   !> The weight of the past in the contact line search's acceptance level (contact_line_search;
+   !> 0 would be the monotone rule): Zhang & Hager's eta, their recommended 0.85
+   real(dp), parameter :: nonmonotone_weight = 0.85_dp
    real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
 
 contains
@@ -147,6 +163,7 @@ contains
       logical, intent(in), optional :: residual_only
       integer :: iteration, outcome
       real(dp) :: residual_norm, reference, correction_norm, energy, current_time, time_correction
+      type(acceptance_level_t) :: acceptance   !! of the contact line search
       logical :: waive_displacement
 
       current_time = time
@@ -190,12 +207,23 @@ contains
          if (allocated(error) .or. allocated(report%failure)) return
          context%n_iterations = context%n_iterations + 1
          if (state%has_contact .and. iteration > 0) then
-            call contact_line_search(model, context, state, current_time, time_correction, residual_norm, &
+            call acceptance%include(residual_norm)
+            call contact_line_search(model, context, state, current_time, time_correction, acceptance%level, &
                                      correction_norm, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
       end do
    end subroutine solve_increment
+
+   !> The level after a Newton step that starts from |r| = residual_norm (acceptance_level_t).
+   pure subroutine include_step(acceptance, residual_norm)
+      class(acceptance_level_t), intent(inout) :: acceptance
+      real(dp), intent(in) :: residual_norm
+      real(dp) :: weight
+      weight = nonmonotone_weight*acceptance%weight + 1.0_dp
+      acceptance%level = (nonmonotone_weight*acceptance%weight*acceptance%level + residual_norm)/weight
+      acceptance%weight = weight
+   end subroutine include_step
 
    !> Start an increment at pseudo time `time`: the solver's and the contact branches' state
    !> reset, the prescribed displacements of `time` (path following: of the step's end) set.
@@ -536,18 +564,22 @@ contains
    !> pushes across its friction cone or through its contact. Without a bracket (g(1) > 0,
    !> or g(0) <= 0 with an unsymmetric tangent) the step is halved; after a step where an
    !> element cannot be evaluated, the search stays below that step. The first trial whose
-   !> residual norm is not larger than before is accepted; after `max_trials` the trial with
+   !> residual norm is not larger than `acceptance_level` is accepted: a weighted mean of |r|
+   !> at the starts of this increment's Newton steps (acceptance_level_t, nonmonotone: while
+   !> the active set of a soft penalty grows over several iterations, the residual may rise a
+   !> little for an iteration or two on the way to the solution, and the monotone rule cut those
+   !> steps short); after `max_trials` the trial with
    !> the smallest residual norm is kept. The correction norm reported is that of the
    !> accepted step. With path following the pseudo time moves with the step, t_old + s dt
    !> (`time` in: after the full step; out: after the accepted one).
-   subroutine contact_line_search(model, context, state, time, time_correction, previous_norm, &
+   subroutine contact_line_search(model, context, state, time, time_correction, acceptance_level, &
                                   correction_norm, failure, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(inout) :: time
       real(dp), intent(in) :: time_correction   !! dt of the full step (0 without path following)
-      real(dp), intent(in) :: previous_norm
+      real(dp), intent(in) :: acceptance_level
       real(dp), intent(inout) :: correction_norm
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
@@ -576,7 +608,7 @@ contains
             bracketed = .false.
             failed_high = .true.
          else
-            if (trial_norm <= previous_norm) then
+            if (trial_norm <= acceptance_level) then
                correction_norm = fraction*norm2(context%correction)
                return
             end if

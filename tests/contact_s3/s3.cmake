@@ -12,7 +12,7 @@ set(s3_reference ${s3_dir}/reference_coarse_epsn1e6.txt)
 # The benchmark as specified (EPSN 1e8, EPST 1e6, HEX8 + EAS 3 = the seed's Hexa8-E3) with
 # smoothed master normals (NORMALS Smoothed, docs/contact.md): coarse mesh, mu = 0.5, 0.25, 0.1:
 # the full load, equilibrium, u_z against the stored value and within 2 % of mu = 0.5's.
-# Measured: 6 / 8 / 22 increments, 2 / 7 / 40 s. With facet normals mu = 0.1 stops at t = 0.754
+# Measured: 6 / 6 / 22 increments, 2 / 7 / 40 s. With facet normals mu = 0.1 stops at t = 0.754
 # (the facet model's load has a maximum at t = 0.7919: contact_s3_coarse_mu0.1_path).
 foreach(mu 0.5 0.1 0.25)
   add_test(NAME contact_s3_coarse_mu${mu}
