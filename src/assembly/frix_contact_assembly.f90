@@ -376,7 +376,8 @@ contains
                                          pass%has_anchor(i), .true., pass%result(i), force(:n), tangent(:n, :n), &
                                          x_anchor_face=x_anchor_face, branch=pass%branch(i), &
                                          friction_scale=system%friction_scale, x_ring=x_ring, patch_faces=patch, &
-                                         multiplier=pass%multiplier(i), tangential_multiplier=lambda_t)
+                                         multiplier=pass%multiplier(i), tangential_multiplier=lambda_t, &
+                                         free_edges=pass%free_edge(:, pass%face(i)))
                   if (.not. present(matrix)) exit
                   if (.not. slip_reversed(pass, i)) exit
                end do

@@ -54,6 +54,7 @@ module frix_contact_kernel
    use frix_smoothed_normals, only: patch_normals, patch_normal_derivatives, smooth_projection, smooth_normal_at
    use frix_contact_parameters, only: contact_parameters_t
    use frix_friction_law, only: branch_free
+   use frix_free_edge_zone, only: extension_zone, fade_start, edge_nodes, clamped_on_edge
    implicit none
    private
 
@@ -116,10 +117,12 @@ contains
    !> If the closest point lies outside the face by more than edge_tolerance, then without
    !> `clamp` nothing is computed (result%outside, status open, zero fint and tangent: the
    !> caller should try the neighbouring face); with `clamp` the closest point of the bounded
-   !> face (on an edge or a corner) and the face normal there are used.
+   !> face (on an edge or a corner) and the face normal there are used, and where that point
+   !> lies on one of `free_edges` the force (pressure and traction) is faded over the extension
+   !> zone's outer half (edge_fade).
    subroutine node_face_contact(parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
                                 result, fint, tangent, x_anchor_face, branch, friction_scale, x_ring, patch_faces, &
-                                multiplier, tangential_multiplier)
+                                multiplier, tangential_multiplier, free_edges)
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3)      !! current slave position X + u
       real(dp), intent(in) :: x_master(3, 4)  !! current master face nodes, outward (HEX8 face) order
@@ -152,6 +155,10 @@ contains
       !> augmented friction: the node's tangential multiplier lambda_T (force/area, global
       !> components; its part in the tangent plane counts); absent: the penalty's trial
       real(dp), intent(in), optional :: tangential_multiplier(3)
+      !> which of the face's edges are free edges of the master surface (frix_free_edge_zone):
+      !> a node clamped onto one has its force faded over the extension zone's outer half
+      logical, intent(in), optional :: free_edges(4)
+      type(dual_t) :: fade
       type(dual_t) :: xs(3), xm(3, 4), xa(3, 4), xi(2), shape(4), x(3), a1(3), a2(3), normal(3), gap
       type(dual_t) :: pressure, anchor_point(3), relative(3), traction(3), force(3), fd(15)
       type(dual_t) :: nodal(3, 4), residual(2)
@@ -297,7 +304,11 @@ contains
       if (has_anchor .and. result%status == contact_slip) &
          result%slip_increment = norm2(result%new_anchor - old_anchor)
 
-      force = area*(pressure*normal + traction)
+      fade = dual_constant(1.0_dp)
+      if (result%clamped .and. present(free_edges)) fade = edge_fade(xs, xm, x, normal, xi, fixed, free_edges)
+      result%pressure = fade%value*result%pressure
+      result%traction = fade%value*result%traction
+      force = (fade*area)*(pressure*normal + traction)
       fd(1:3) = -force
       do a = 1, 4
          fd(3*a + 1:3*a + 3) = shape(a)*force
@@ -442,6 +453,34 @@ contains
       call parameters%friction%return_map(trial, scale*pressure, branch, traction, slipping, law_slipping)
       law_status = merge(contact_slip, contact_stick, law_slipping)
    end subroutine friction_response
+
+   !> The factor w on the force of a slave node xs clamped onto the point x of a free edge (or
+   !> a corner on one) of face xm: 1 - 3 s^2 + 2 s^3 (frix_free_edge_zone's fade), the product
+   !> over the free edges it is clamped onto. The distance beyond edge k is (xs - x) . m, m the
+   !> unit outward normal of the edge in the face's tangent plane (e x n), as the search's
+   !> beyond_free_edge measures it; the zone's length and m are differentiated with the face.
+   pure function edge_fade(xs, xm, x, normal, xi, fixed, free) result(fade)
+      type(dual_t), intent(in) :: xs(3), xm(3, 4), x(3), normal(3), xi(2)
+      logical, intent(in) :: fixed(2), free(4)
+      type(dual_t) :: fade, outward(3), zone, s
+      integer :: k, first, second, after, before
+      fade = dual_constant(1.0_dp)
+      do k = 1, 4
+         if (.not. (free(k) .and. clamped_on_edge(k, xi%value, fixed))) cycle
+         call edge_nodes(k, first, second, after, before)
+         outward = dual_cross(xm(:, second) - xm(:, first), normal)
+         outward = outward/dual_norm(outward)
+         zone = (0.5_dp*extension_zone)*(dual_norm(xm(:, after) - xm(:, second)) + &
+                                         dual_norm(xm(:, first) - xm(:, before)))
+         s = (dual_dot(xs - x, outward) - fade_start*zone)/((1.0_dp - fade_start)*zone)
+         if (s%value <= 0.0_dp) cycle
+         if (s%value >= 1.0_dp) then
+            fade = dual_constant(0.0_dp)
+         else
+            fade = fade*(1.0_dp - s*s*(3.0_dp - 2.0_dp*s))
+         end if
+      end do
+   end function edge_fade
 
    !> Shape functions, position and tangent vectors x_,1, x_,2 of the face at dual xi.
    pure subroutine face_geometry(xm, xi, shape, x, a1, a2)

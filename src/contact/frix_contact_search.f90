@@ -25,6 +25,7 @@ module frix_contact_search
    use frix_smoothed_normals, only: patch_normals, smooth_projection, smooth_normal_at
    use frix_contact_patches, only: ring_nodes_of, patch_faces_of
    use frix_contact_pass, only: contact_pass_t
+   use frix_free_edge_zone, only: extension_zone, edge_nodes, clamped_on_edge
    implicit none
    private
 
@@ -45,17 +46,6 @@ module frix_contact_search
    real(dp), parameter :: face_hysteresis = 1.0e-3_dp
    real(dp), parameter :: coplanar_angle = 1.0e-2_dp   !! rad
    integer, parameter :: max_cells = 200              !! most grid cells along an axis
-   !> The extension zone of a free edge of the master surface, as a fraction of the face's length
-   !> across that edge: a slave node up to this far beyond the edge still gets the face (so that
-   !> a node of coextensive surfaces that round-off or the deformation puts just beyond the
-   !> boundary is not lost), farther it is open. 0.1 is Abaqus' default for node-to-surface
-   !> contact (*CONTACT PAIR, EXTENSION ZONE: "a fraction of the end segment or facet edge
-   !> length", default 0.1; Abaqus Keywords Reference).
-   real(dp), parameter :: extension_zone = 0.1_dp
-   !> The parent coordinate held along edge k of a face, and its value there (the edge order of
-   !> frix_contact_patches' free_edges).
-   integer, parameter :: edge_coordinate(4) = [2, 1, 2, 1]
-   real(dp), parameter :: edge_value(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]
 
    !> Uniform bucket grid of the master faces' inflated bounding boxes: the faces whose box
    !> meets cell c are cell_faces(cell_start(c) + 1 : cell_start(c + 1)); cells are numbered
@@ -285,29 +275,26 @@ contains
 
    !> Whether the closest point of x_slave on the bounded face x_face (parent coordinates xi,
    !> `fixed` the clamped ones: closest_point_in_face's) is clamped onto one of the face's free
-   !> edges (or a corner on one) with x_slave beyond that edge by more than the extension zone. Beyond: d . m, d = x_slave - x_c (x_c the clamped point), m the unit
+   !> edges (or a corner on one) with x_slave beyond that edge by more than the extension zone
+   !> (frix_free_edge_zone). Beyond: d . m, d = x_slave - x_c (x_c the clamped point), m the unit
    !> outward normal of the edge in the face's tangent plane at x_c (e x n, e the edge's
    !> direction in face order, n the face normal); on an edge d . m is the whole tangential part
    !> of d, at a corner only the part across the free edge counts. The zone: extension_zone
-   !> times the face's length across the edge (the mean of the two face edges that meet it;
-   !> current configuration).
+   !> times the face's length across the edge.
    pure logical function beyond_free_edge(x_face, free, x_slave, xi, fixed) result(beyond)
       real(dp), intent(in) :: x_face(3, 4), x_slave(3), xi(2)
       logical, intent(in) :: free(4)          !! the face's free edges (pass%free_edge)
       logical, intent(in) :: fixed(2)
       real(dp) :: offset(3), outward(3), across
-      integer :: k
+      integer :: k, first, second, after, before
       beyond = .false.
       if (.not. any(free)) return
       offset = x_slave - face_position(x_face, xi)
       do k = 1, 4
-         ! clamped onto edge k: closest_point_in_face sets the held coordinate to exactly -1 or +1
-         if (.not. (free(k) .and. fixed(edge_coordinate(k)) .and. xi(edge_coordinate(k)) == edge_value(k))) cycle
-         associate (first => x_face(:, k), second => x_face(:, mod(k, 4) + 1), &
-                    after => x_face(:, mod(k + 1, 4) + 1), before => x_face(:, mod(k + 2, 4) + 1))
-            outward = cross_product(second - first, face_normal(x_face, xi))
-            across = 0.5_dp*(norm2(after - second) + norm2(first - before))
-         end associate
+         if (.not. (free(k) .and. clamped_on_edge(k, xi, fixed))) cycle
+         call edge_nodes(k, first, second, after, before)
+         outward = cross_product(x_face(:, second) - x_face(:, first), face_normal(x_face, xi))
+         across = 0.5_dp*(norm2(x_face(:, after) - x_face(:, second)) + norm2(x_face(:, first) - x_face(:, before)))
          if (dot_product(offset, outward) > extension_zone*across*norm2(outward)) beyond = .true.
       end do
    end function beyond_free_edge

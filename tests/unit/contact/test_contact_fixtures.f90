@@ -183,7 +183,8 @@ contains
    !> differs from `expected_status` at the base point or at any perturbed point (the
    !> difference must not cross a branch).
    subroutine check_face_tangent(error, parameters, x_slave, x_master, area, anchor_xi, has_anchor, clamp, &
-                                 expected_status, tangent, x_anchor_face, x_ring, patch_faces, tangential_multiplier)
+                                 expected_status, tangent, x_anchor_face, x_ring, patch_faces, tangential_multiplier, &
+                                 free_edges)
       type(error_t), allocatable, intent(out) :: error
       type(contact_parameters_t), intent(in) :: parameters
       real(dp), intent(in) :: x_slave(3), x_master(3, 4), area, anchor_xi(2)
@@ -195,6 +196,7 @@ contains
       real(dp), intent(in), optional :: x_ring(:, :)
       integer, intent(in), optional :: patch_faces(:, :)
       real(dp), intent(in), optional :: tangential_multiplier(3)   !! augmented friction's lambda_T
+      logical, intent(in), optional :: free_edges(4)   !! the master face's free edges (the fade)
       type(contact_point_result_t) :: base, plus, minus
       real(dp), allocatable :: q(:), qp(:), fint(:), f_plus(:), f_minus(:), k_other(:, :), column(:)
       real(dp) :: h, scale, worst
@@ -249,7 +251,8 @@ contains
          if (present(x_ring)) ring = reshape(unknowns(ring_first:), [3, size(x_ring, 2)])
          call node_face_contact(parameters, unknowns(1:3), reshape(unknowns(4:15), [3, 4]), area, anchor_xi, &
                                 has_anchor, clamp, result, force, stiffness, x_anchor_face=anchor_face, &
-                                x_ring=ring, patch_faces=patch_faces, tangential_multiplier=tangential_multiplier)
+                                x_ring=ring, patch_faces=patch_faces, tangential_multiplier=tangential_multiplier, &
+                                free_edges=free_edges)
       end subroutine evaluate
    end subroutine check_face_tangent
 

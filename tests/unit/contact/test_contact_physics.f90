@@ -10,6 +10,9 @@
 !>     and master together rotates the traction and leaves p_N unchanged (history follows
 !>     large sliding);
 !>   - beyond an edge without clamp the kernel reports `outside` and gives no force;
+!>   - clamped beyond a free edge of the master surface, the force is faded by the smoothstep
+!>     1 - 3 s^2 + 2 s^3 over the outer half of the extension zone (0.1 of the face's length
+!>     across the edge, here 0.2): 1 at 0.05 beyond, 1/2 at 0.15, 0 at 0.2 and farther;
 !>   - a friction scale f (the driver's friction continuation) gives exactly the response with
 !>     mu replaced by f mu, on a face and on a plane, in slip and where it turns slip into stick;
 !>   - smoothed normals: on a flat patch they give the facet formulation's forces; on a curved
@@ -54,6 +57,7 @@ contains
                new_unittest('rigid plane: normal force, stick and slip', test_plane_physics), &
                new_unittest('separated node: open, anchor = closest point', test_open_anchor), &
                new_unittest('crossing an edge with clamp: force continuous', test_edge_continuity), &
+               new_unittest('beyond a free edge: force faded over the zone''s outer half', test_free_edge_fade), &
                new_unittest('friction scale f: the response of f mu', test_friction_scale), &
                new_unittest('smoothed normals on a flat patch: the facet forces', test_smoothed_flat), &
                new_unittest('smoothed normals: continuous across a shared edge', test_smoothed_continuity)]
@@ -239,6 +243,29 @@ contains
       if (allocated(error)) return
       call check_close(error, result%pressure, eps_n*depth, 1.0e-12_dp, message='clamped p_N')
    end subroutine test_outside
+
+   !> Frictionless slaves at depth d beyond the free edge x = 2 of the flat face (edge 2,
+   !> xi1 = +1): p_N = w eps_N d with w the fade at beyond / zone = 0.25, 0.75, 1.1 (zone 0.2).
+   subroutine test_free_edge_fade(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_point_result_t) :: result
+      real(dp) :: fint(15), tangent(15, 15)
+      real(dp), parameter :: beyond(3) = [0.05_dp, 0.15_dp, 0.22_dp], fade(3) = [1.0_dp, 0.5_dp, 0.0_dp]
+      logical, parameter :: free(4) = [.false., .true., .false., .false.]
+      integer :: k
+      do k = 1, 3
+         call node_face_contact(make_parameters(0.0_dp), [2.0_dp + beyond(k), 0.5_dp, -depth], flat_face, area, &
+                                [0.0_dp, 0.0_dp], .false., .true., result, fint, tangent, free_edges=free)
+         call check(error, result%clamped, 'clamped onto the free edge')
+         if (allocated(error)) return
+         call check_close(error, result%pressure, fade(k)*eps_n*depth, 1.0e-12_dp, &
+                          message='p_N at '//to_string(beyond(k))//' beyond the edge')
+         if (allocated(error)) return
+         call check(error, abs(sum(fint(3::3)) ) <= 1.0e-12_dp .and. &
+                    abs(fint(3) + fade(k)*area*eps_n*depth) <= 1.0e-10_dp, 'slave force -w A p n, forces sum to zero')
+         if (allocated(error)) return
+      end do
+   end subroutine test_free_edge_fade
 
    subroutine test_plane_physics(error)
       type(error_t), allocatable, intent(out) :: error

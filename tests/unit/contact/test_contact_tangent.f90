@@ -42,6 +42,10 @@ contains
                new_unittest('warped face, near an edge (xi = 0.95), slip', test_edge_slip), &
                new_unittest('warped face, beyond an edge, clamped, slip', test_clamped_edge), &
                new_unittest('warped face, beyond a corner, clamped, stick', test_clamped_corner_stick), &
+               new_unittest('warped face, beyond a free edge, in the fade, slip', test_free_edge_slip), &
+               new_unittest('warped face, beyond a free edge, in the fade, stick', test_free_edge_stick), &
+               new_unittest('warped face, beyond a corner of two free edges, in the fade, slip', &
+                            test_free_corner_slip), &
                new_unittest('warped face, beyond a corner, clamped, slip', test_clamped_corner_slip), &
                new_unittest('anchor on the neighbouring face, stick', test_other_face_stick), &
                new_unittest('anchor on the neighbouring face, slip', test_other_face_slip), &
@@ -151,6 +155,35 @@ contains
       call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.01_dp, 1.01_dp], depth), &
                               warped_face, area, [0.995_dp, 0.995_dp], .true., .true., contact_stick, tangent)
    end subroutine test_clamped_corner_stick
+
+   !> A slave 0.15 (in xi1: 0.075 of the face's length) beyond the edge xi1 = +1, a free edge of
+   !> the master: the force is faded (the zone 0.1, the fade from 0.05), its derivative enters
+   !> the tangent.
+   subroutine test_free_edge_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.15_dp, 0.3_dp], depth), &
+                              warped_face, area, [0.9_dp, 0.35_dp], .true., .true., contact_slip, tangent, &
+                              free_edges=[.false., .true., .false., .false.])
+   end subroutine test_free_edge_slip
+
+   subroutine test_free_edge_stick(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.15_dp, 0.3_dp], depth), &
+                              warped_face, area, [1.148_dp, 0.301_dp], .true., .true., contact_stick, tangent, &
+                              free_edges=[.false., .true., .false., .false.])
+   end subroutine test_free_edge_stick
+
+   !> Beyond the corner xi = (1, 1) where the free edges 2 (xi1 = +1) and 3 (xi2 = +1) meet:
+   !> faded across both.
+   subroutine test_free_corner_slip(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: tangent(15, 15)
+      call check_face_tangent(error, make_parameters(mu), slave_below(warped_face, [1.14_dp, 1.12_dp], depth), &
+                              warped_face, area, [0.9_dp, 0.95_dp], .true., .true., contact_slip, tangent, &
+                              free_edges=[.false., .true., .true., .false.])
+   end subroutine test_free_corner_slip
 
    subroutine test_clamped_corner_slip(error)
       type(error_t), allocatable, intent(out) :: error
