@@ -35,6 +35,7 @@ module frix_contact_assembly
                                 start_pass_state, kernel_nodes
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
    use frix_tie_pass, only: setup_tie
+   use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass
    use frix_tie_constraints, only: check_tie_nodes, tie_pattern_pairs
    use frix_strings, only: to_string
    use frix_friction_law, only: branch_free, branch_stick
@@ -214,6 +215,14 @@ contains
                            contact_pair%tie_tolerance, pass)
             return
          end if
+         if (contact_pair%mortar) then
+            call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
+            pass%mortar = .true.
+            pass%slave_faces = surface_faces(model%mesh, model%mesh%surfaces(slave_surface))
+            pass%band = max(pass%band, contact_pair%parameters%gap_tolerance)
+            call start_pass_state(pass)
+            return
+         end if
          if (pass%rigid) then
             allocate (pass%faces(4, 0))
          else
@@ -249,11 +258,20 @@ contains
       real(dp), intent(in) :: u(:)
       type(sparse_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
-      integer :: p, i, a, b, n_nodes, nodes(max_kernel_nodes), first_ring
+      integer :: p, i, a, b, n_nodes, nodes(max_kernel_nodes), first_ring, n_pairs
+      integer, allocatable :: pairs(:, :)
       logical :: missing
 
       missing = .false.
       do p = 1, size(system%passes)
+         if (system%passes(p)%mortar) then
+            call search_mortar_pass(model, system%passes(p), u, matrix, pairs, n_pairs)
+            do i = 1, n_pairs
+               call add_extra_pair(system, pairs(1, i), pairs(2, i))
+            end do
+            missing = missing .or. n_pairs > 0
+            cycle
+         end if
          if (system%passes(p)%rigid .or. system%passes(p)%tied) cycle
          call assign_faces(model%mesh%coords, u, model%contact_pairs(system%passes(p)%pair)%parameters%edge_tolerance, &
                            system%passes(p))
@@ -325,6 +343,10 @@ contains
          if (system%passes(p)%tied) cycle   ! frix_tie_constraints
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
             parameters = pass_parameters(pair%parameters, pass)
+            if (pass%mortar) then
+               call assemble_mortar_pass(model, pass, parameters, u, touching_stiffness, fint, matrix)
+               cycle
+            end if
             touch_normal = parameters%normal%stiffness()
             touch_tangential = 0.0_dp
             if (.not. parameters%friction%frictionless()) &
@@ -539,7 +561,8 @@ contains
          system%passes(p)%committed_tangential_multiplier = system%passes(p)%tangential_multiplier
          system%passes(p)%committed_normal_scale = system%passes(p)%normal_scale
          system%passes(p)%committed_tangential_scale = system%passes(p)%tangential_scale
-         if (system%passes(p)%tied) cycle   ! a tie's foot points never change
+         ! a tie's foot points never change; a (frictionless) mortar pass has no anchors
+         if (system%passes(p)%tied .or. system%passes(p)%mortar) cycle
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) then
