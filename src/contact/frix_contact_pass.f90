@@ -36,6 +36,10 @@ module frix_contact_pass
       logical :: mortar = .false.
       integer, allocatable :: slave_faces(:, :)
       type(mortar_rows_t) :: mortar_rows
+      !> mortar with friction: the rows and the tangential traction t^n (3, n_slave; force per
+      !> current area, the friction law's) of the last converged increment
+      type(mortar_rows_t) :: committed_mortar_rows
+      real(dp), allocatable :: committed_mortar_traction(:, :)
       integer, allocatable :: slave_nodes(:)   !! internal node numbers
       real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
       !> PASSES 2: the other pass of the pair (0 with one pass), the position of each mesh node

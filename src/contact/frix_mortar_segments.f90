@@ -265,15 +265,19 @@ contains
 
    !> The triplets of n_rows rows as compressed rows: row j's nodes
    !> nodes(start(j) + 1 : start(j + 1)) and values(same), repeated nodes summed and values
-   !> below 1e-12 of the row's largest dropped (merge_row).
-   subroutine compress_rows(m, n_rows, start, nodes, values)
+   !> below `drop` (default 1e-12) times the row's largest dropped (merge_row; 0: only zeros).
+   subroutine compress_rows(m, n_rows, start, nodes, values, drop)
       type(triplets_t), intent(in) :: m
       integer, intent(in) :: n_rows
       integer, allocatable, intent(out) :: start(:), nodes(:)
       real(dp), allocatable, intent(out) :: values(:)
+      real(dp), intent(in), optional :: drop
       integer, allocatable :: row_start(:), order(:), fill(:), row_nodes(:)
       real(dp), allocatable :: row_values(:)
       integer :: k, j, n
+      real(dp) :: relative_drop
+      relative_drop = 1.0e-12_dp
+      if (present(drop)) relative_drop = drop
       allocate (row_start(n_rows + 1), source=0)
       do k = 1, m%n
          row_start(m%row(k) + 1) = row_start(m%row(k) + 1) + 1
@@ -291,7 +295,7 @@ contains
       start(1) = 0
       do j = 1, n_rows
          call merge_row(m%node(order(row_start(j) + 1:row_start(j + 1))), &
-                        m%value(order(row_start(j) + 1:row_start(j + 1))), row_nodes, row_values)
+                        m%value(order(row_start(j) + 1:row_start(j + 1))), relative_drop, row_nodes, row_values)
          n = start(j)
          nodes(n + 1:n + size(row_nodes)) = row_nodes
          values(n + 1:n + size(row_nodes)) = row_values
@@ -301,11 +305,12 @@ contains
       values = values(:start(n_rows + 1))
    end subroutine compress_rows
 
-   !> One row's (node, value) contributions with repeated nodes summed and values below 1e-12
-   !> of the largest dropped.
-   pure subroutine merge_row(row_nodes, row_values, nodes, values)
+   !> One row's (node, value) contributions with repeated nodes summed and values not above
+   !> `drop` times the largest dropped.
+   pure subroutine merge_row(row_nodes, row_values, drop, nodes, values)
       integer, intent(in) :: row_nodes(:)
       real(dp), intent(in) :: row_values(:)
+      real(dp), intent(in) :: drop
       integer, allocatable, intent(out) :: nodes(:)
       real(dp), allocatable, intent(out) :: values(:)
       integer :: k, position
@@ -322,7 +327,7 @@ contains
       end do
       if (size(values) == 0) return
       largest = maxval(abs(values))
-      nodes = pack(nodes, abs(values) > 1.0e-12_dp*largest)
-      values = pack(values, abs(values) > 1.0e-12_dp*largest)
+      nodes = pack(nodes, abs(values) > drop*largest)
+      values = pack(values, abs(values) > drop*largest)
    end subroutine merge_row
 end module frix_mortar_segments

@@ -309,7 +309,7 @@ contains
    end subroutine read_discretization
 
    !> DISCRETIZATION Mortar supports one pass against a deformable master with METHOD Penalty
-   !> and no friction, and has no choice of normals (the slave surface's averaged nodal
+   !> (with or without friction), and has no choice of normals (the slave surface's averaged nodal
    !> normals): anything else is reported at its keyword or value.
    subroutine check_mortar(reader, line, options, pair, ok)
       type(deck_reader_t), intent(inout) :: reader
@@ -318,7 +318,6 @@ contains
       type(contact_pair_t), intent(in) :: pair
       logical, intent(inout) :: ok
       character(len=*), parameter :: what = 'DISCRETIZATION Mortar '
-      integer :: k
       if (.not. (ok .and. options%mortar)) return
       if (options%rigid) then
          call reader%report(line, 6, what//'needs a deformable master surface, not a RIGID_PLANE')
@@ -327,14 +326,6 @@ contains
       else if (pair%parameters%normal%name /= 'PENALTY') then
          call reader%report(line, options%method_token, what//'supports METHOD Penalty only, not METHOD '// &
                             options%method)
-      else if (.not. pair%parameters%friction%frictionless()) then
-         k = findloc(options%property_names, 'MU', dim=1)
-         if (k > 0) then
-            k = options%property_tokens(k)
-         else
-            k = options%law_token
-         end if
-         call reader%report(line, max(1, k), what//'is frictionless: MU 0 or LAW Frictionless')
       else if (options%normals_token > 0) then
          call reader%report(line, options%normals_token - 1, what//'takes no NORMALS (it uses the slave '// &
                             'surface''s averaged nodal normals)')

@@ -6,11 +6,12 @@ set(V5V6_DIR ${CMAKE_CURRENT_SOURCE_DIR}/contact_v5v6)
 # Contact patch test with ONE pass (patch_*.dck: the V5 blocks, non-matching 3 x 3 or 5 x 5 on
 # 4 x 4). Exact solution (closed form): sigma_zz = -p in both blocks, all other stresses 0,
 # contact pressure p at every slave node. Measured (2026-11-27): slave pressures equal to p
-# within 5.1e-10 (3 x 3 upper), 7.5e-10 (lower under 3 x 3), 1.3e-9 (5 x 5 upper), 6.4e-10 (lower
-# under 5 x 5); stresses within 5.1e-13 of p. The pressure is eps_N times a gap of -p/eps_N =
+# within 1.4e-10 (3 x 3 upper), 2.2e-10 (lower under 3 x 3), 2.6e-10 (5 x 5 upper), 3.8e-10 (lower
+# under 5 x 5); stresses within 2.3e-13 of p. The pressure is eps_N times a gap of -p/eps_N =
 # -1e-6 computed from positions of about 0.5: its round-off is 1e-16 x 0.5/1e-6 = 5e-11 per
-# term, summed over the row's 10-20 terms. Bounds: 5e-9 on the pressures (the slave side's
-# <slave>_err and pass1_min/max), 1e-10 on the stresses, 1e-8 on the load balance pass_sum.
+# term, summed over the row's 10-20 terms (1e-9). Bounds: 5e-9 on the pressures (the slave
+# side's <slave>_err and pass1_min/max), 1e-10 on the stresses, 1e-8 on the load balance
+# pass_sum.
 # Node-to-segment with one pass on the same meshes fails (v5_u*_1pass in contact_v5v6: the
 # master's stresses 5-18 % off, its nodal tractions 15-41 %). The checker's master-side error
 # (N_a(xi)-weighted nodal tractions, node-to-segment's load path) does not apply: not checked.
@@ -43,3 +44,34 @@ add_test(NAME contact_mortar_hertz_nonaligned
                  --check a_last_ratio=0:1 --check a_open_ratio=1:2 --check force_ratio=0.99:1.01
                  --check max_err_all=0:0.02 --check ripple=0:0.025)
 set_tests_properties(contact_mortar_hertz_nonaligned PROPERTIES LABELS "regression;contact")
+
+# Coulomb friction (drag.dck, run_drag.sh, check_drag.py): a 3 x 3 block pressed (p = 100) onto
+# a larger 8 x 4 block, then dragged 0.002 along x in 20 increments; MU 0.3, EPST 1e6, nu = 0.
+# Coulomb: stick while |F_t| < mu F_n, then every node slips and F_t = mu F_n (the sums of the
+# slave nodes' written tractions times their tributary areas). Measured (2026-11-27): pressing
+# gives |F_t| = 7.6e-14 F_n (nu = 0: no lateral expansion); step 2 sticks in 2 increments (F_t
+# up to 0.91 mu F_n), partly slips in 3, slips at every node in 15 with |F_t| = mu F_n to
+# 7.2e-8 (the traction is tangential to the slave's nodal normal, tilted by the shear: its x
+# part is cos(tilt) of it) and |t_i| = mu p_i at every slipping node to 1.3e-16; |F_y| 1.2e-11
+# F_n; 99 Newton iterations (3 to 6 per increment; node-to-segment 76 on the deck), 2 s. Bounds: Coulomb's
+# relations to 1e-6 (F_t = mu F_n; a tilt of 1e-3 would give 5e-7) and 1e-12 (per node), at
+# least one sticking and ten slipping increments, pressing and lateral forces below 1e-8 F_n.
+add_test(NAME contact_mortar_drag_coulomb
+         COMMAND bash ${MORTAR_DIR}/run_drag.sh ${FRIX_BIN} ${MORTAR_DIR}/drag.dck 0.3
+                 --check press_ratio=0:1e-8 --check stick_increments=1:20 --check stick_max_ratio=0:1
+                 --check slip_increments=10:20 --check slip_ratio_err=0:1e-6 --check node_slip_err=0:1e-12
+                 --check lateral=0:1e-8)
+set_tests_properties(contact_mortar_drag_coulomb PROPERTIES LABELS "regression;contact")
+
+# Restart (drag_restart.dck: drag.dck with HDF5 and TOLRESID/TOLDISP 1e-11): run through, then
+# restarted from increment 2.3 (4 nodes slipping, 12 sticking); the committed tractions come
+# back from contact/pass1_history (rows 4-6), the committed rows are computed again from the
+# displacements (as at every commit). Measured: displacements equal to 1.4e-13, slip 6.1e-12,
+# pressures and tractions 2.1e-10 of their largest. The restarted run's sparse pattern lacks
+# the node pairs gathered before 2.3, so its factorization rounds differently, and eps_N = 1e8
+# turns that into the pressures (one ulp of a position, 5.5e-17, is 3.4e-11 of the largest
+# pressure); node-to-segment contact on the same deck differs by 1.0e-10 too. Bound 1e-9.
+add_test(NAME restart_contact_mortar
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_contact_test.sh ${FRIX_BIN}
+                 ${MORTAR_DIR}/drag_restart.dck 1e-9)
+set_tests_properties(restart_contact_mortar PROPERTIES LABELS "regression;contact")
