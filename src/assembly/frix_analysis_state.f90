@@ -76,9 +76,11 @@ contains
       if (state%has_contact) call setup_contact(model, state%contact, error)
    end subroutine create_analysis_state
 
-   !> Accept the current iterate as converged.
-   subroutine commit_state(state)
+   !> Accept the current iterate as converged (the model: for the mortar contact rows at the
+   !> converged displacements).
+   subroutine commit_state(state, model)
       type(analysis_state_t), intent(inout) :: state
+      type(model_t), intent(in) :: model
       real(dp) :: dt
       dt = state%time - state%committed_time
       if (dt > 0.0_dp) then
@@ -86,7 +88,7 @@ contains
          state%rate_start = state%committed_time
       end if
       call commit_solution(state)
-      if (state%has_contact) call commit_contact(state%contact, dt)
+      if (state%has_contact) call commit_contact(state%contact, dt, model, state%u)
    end subroutine commit_state
 
    !> Accept the current time, displacements, EAS parameters and material history (not the

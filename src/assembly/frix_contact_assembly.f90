@@ -35,6 +35,7 @@ module frix_contact_assembly
                                 start_pass_state, kernel_nodes
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
    use frix_tie_pass, only: setup_tie
+   use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass, commit_mortar_pass, restart_mortar_pass
    use frix_tie_constraints, only: check_tie_nodes, tie_pattern_pairs
    use frix_strings, only: to_string
    use frix_friction_law, only: branch_free, branch_stick
@@ -43,7 +44,7 @@ module frix_contact_assembly
 
    public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
-   public :: contact_history_rows, get_contact_history, set_contact_history
+   public :: contact_history_rows, get_contact_history, set_contact_history, restart_mortar_rows
    public :: reset_friction_branches, release_inconsistent_branches
    public :: check_ties
 
@@ -214,6 +215,15 @@ contains
                            contact_pair%tie_tolerance, pass)
             return
          end if
+         if (contact_pair%mortar) then
+            call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
+            pass%mortar = .true.
+            pass%slave_faces = surface_faces(model%mesh, model%mesh%surfaces(slave_surface))
+            pass%band = max(pass%band, contact_pair%parameters%gap_tolerance)
+            call start_pass_state(pass)
+            call restart_mortar_pass(model, pass, spread(0.0_dp, 1, 3*model%mesh%n_nodes), .false.)
+            return
+         end if
          if (pass%rigid) then
             allocate (pass%faces(4, 0))
          else
@@ -249,11 +259,22 @@ contains
       real(dp), intent(in) :: u(:)
       type(sparse_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
-      integer :: p, i, a, b, n_nodes, nodes(max_kernel_nodes), first_ring
+      integer :: p, i, a, b, n_nodes, nodes(max_kernel_nodes), first_ring, n_pairs
+      integer, allocatable :: pairs(:, :)
       logical :: missing
 
       missing = .false.
       do p = 1, size(system%passes)
+         if (system%passes(p)%mortar) then
+            call search_mortar_pass(model, system%passes(p), &
+                                    .not. model%contact_pairs(system%passes(p)%pair)%parameters%friction%frictionless(), &
+                                    u, matrix, pairs, n_pairs)
+            do i = 1, n_pairs
+               call add_extra_pair(system, pairs(1, i), pairs(2, i))
+            end do
+            missing = missing .or. n_pairs > 0
+            cycle
+         end if
          if (system%passes(p)%rigid .or. system%passes(p)%tied) cycle
          call assign_faces(model%mesh%coords, u, model%contact_pairs(system%passes(p)%pair)%parameters%edge_tolerance, &
                            system%passes(p))
@@ -325,6 +346,11 @@ contains
          if (system%passes(p)%tied) cycle   ! frix_tie_constraints
          associate (pass => system%passes(p), pair => model%contact_pairs(system%passes(p)%pair))
             parameters = pass_parameters(pair%parameters, pass)
+            if (pass%mortar) then
+               call assemble_mortar_pass(model, pass, parameters, u, touching_stiffness, system%friction_scale, fint, &
+                                         matrix)
+               cycle
+            end if
             touch_normal = parameters%normal%stiffness()
             touch_tangential = 0.0_dp
             if (.not. parameters%friction%frictionless()) &
@@ -516,12 +542,15 @@ contains
       end do
    end subroutine add_touching_stiffness
 
-   !> Accept the current contact state as converged: anchors, accumulated slip, multipliers,
-   !> and the multipliers' rates over the increment of length `dt` (pseudo time): (lambda_n -
+   !> Accept the current contact state as converged: anchors (mortar passes: rows at the
+   !> converged displacements u and tractions), accumulated slip, multipliers, and the
+   !> multipliers' rates over the increment of length `dt` (pseudo time): (lambda_n -
    !> lambda_{n-1}) / dt for a node pressed (lambda > 0) at both ends of the increment, else 0.
-   subroutine commit_contact(system, dt)
+   subroutine commit_contact(system, dt, model, u)
       type(contact_system_t), intent(inout) :: system
       real(dp), intent(in) :: dt
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: u(:)   !! the converged displacements
       integer :: p, i
       do p = 1, size(system%passes)
          associate (pass => system%passes(p))
@@ -541,6 +570,10 @@ contains
          system%passes(p)%committed_normal_scale = system%passes(p)%normal_scale
          system%passes(p)%committed_tangential_scale = system%passes(p)%tangential_scale
          if (system%passes(p)%tied) cycle   ! a tie's foot points never change
+         if (system%passes(p)%mortar) then
+            call commit_mortar_pass(model, system%passes(p), u)
+            cycle
+         end if
          associate (pass => system%passes(p))
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) then
@@ -663,8 +696,9 @@ contains
    end subroutine contact_pass_table
 
    !> The committed slip history of pass p as a real table (contact_history_rows, n_slave) for
-   !> restart files: anchor face, anchor face coordinates (2), anchor point (3, rigid plane),
-   !> has-anchor flag (0/1), accumulated slip.
+   !> restart files: anchor face, anchor face coordinates (2), anchor point (3, rigid plane;
+   !> a mortar pass: the committed traction t^n, force per current area), has-anchor flag
+   !> (0/1), accumulated slip.
    subroutine get_contact_history(system, p, values)
       type(contact_system_t), intent(in) :: system
       integer, intent(in) :: p
@@ -674,12 +708,14 @@ contains
          values(1, :) = real(pass%anchor_face, dp)
          values(2:3, :) = pass%anchor_xi
          values(4:6, :) = pass%anchor_point
+         if (pass%mortar) values(4:6, :) = pass%committed_mortar_traction
          values(7, :) = merge(1.0_dp, 0.0_dp, pass%has_anchor)
          values(8, :) = pass%slip
       end associate
    end subroutine get_contact_history
 
-   !> Restore what get_contact_history stored.
+   !> Restore what get_contact_history stored (a mortar pass's committed rows then come from
+   !> restart_mortar_rows).
    subroutine set_contact_history(system, p, values)
       type(contact_system_t), intent(inout) :: system
       integer, intent(in) :: p
@@ -688,8 +724,24 @@ contains
          pass%anchor_face = nint(values(1, :))
          pass%anchor_xi = values(2:3, :)
          pass%anchor_point = values(4:6, :)
+         if (pass%mortar) then
+            pass%committed_mortar_traction = values(4:6, :)
+            pass%anchor_point = 0.0_dp
+         end if
          pass%has_anchor = values(7, :) > 0.5_dp
          pass%slip = values(8, :)
       end associate
    end subroutine set_contact_history
+
+   !> After a restart: the committed rows of the mortar passes at the committed displacements u
+   !> (their tractions restored by set_contact_history).
+   subroutine restart_mortar_rows(model, system, u)
+      type(model_t), intent(in) :: model
+      type(contact_system_t), intent(inout) :: system
+      real(dp), intent(in) :: u(:)
+      integer :: p
+      do p = 1, size(system%passes)
+         if (system%passes(p)%mortar) call restart_mortar_pass(model, system%passes(p), u, .true.)
+      end do
+   end subroutine restart_mortar_rows
 end module frix_contact_assembly

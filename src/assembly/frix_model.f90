@@ -131,6 +131,9 @@ module frix_model
       !> TIE: slave nodes farther than this from the master surface (reference configuration,
       !> length) are not tied; < 0: the default, a tenth of the mean master face size
       real(dp) :: tie_tolerance = -1.0_dp
+      !> DISCRETIZATION Mortar: segment-to-segment contact with dual mortar weighted gaps
+      !> (frix_mortar_contact, one pass, deformable master); .false.: node-to-segment
+      logical :: mortar = .false.
       !> PENALTY_FACTOR c of an automatic penalty: eps_N = c (M/h of the softer surface)
       real(dp) :: penalty_factor = default_penalty_factor
       !> How the penalties of a pair with an automatic one were chosen, e.g. `EPSN 2.69e+04

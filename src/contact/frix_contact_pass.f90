@@ -10,6 +10,7 @@ module frix_contact_pass
    use frix_contact_patches, only: surface_patches_t, surface_faces, free_edges
    use frix_friction_law, only: branch_free
    use frix_tie_mortar, only: tie_coupling_t
+   use frix_mortar_contact, only: mortar_rows_t
    implicit none
    private
 
@@ -28,6 +29,17 @@ module frix_contact_pass
       !> frix_tie_constraints); no kernel, no search
       logical :: tied = .false.
       type(tie_coupling_t) :: tie
+      !> DISCRETIZATION Mortar: the slave nodes' weighted gaps over the slave faces
+      !> (4, n_slave_faces; mesh nodes, outward order) against the master faces, with the
+      !> mortar rows of the current iterate (frix_mortar_contact, computed by the search); no
+      !> kernel per node and face, pass%face(i) a master face overlapping node i's faces
+      logical :: mortar = .false.
+      integer, allocatable :: slave_faces(:, :)
+      type(mortar_rows_t) :: mortar_rows
+      !> mortar with friction: the rows and the tangential traction t^n (3, n_slave; force per
+      !> current area, the friction law's) of the last converged increment
+      type(mortar_rows_t) :: committed_mortar_rows
+      real(dp), allocatable :: committed_mortar_traction(:, :)
       integer, allocatable :: slave_nodes(:)   !! internal node numbers
       real(dp), allocatable :: area(:)         !! tributary area of each slave node (reference)
       !> PASSES 2: the other pass of the pair (0 with one pass), the position of each mesh node

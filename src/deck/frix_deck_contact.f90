@@ -47,6 +47,9 @@ module frix_deck_contact
       integer :: factor_token = 0            !! token of PENALTY_FACTOR's value, 0 if not given
       real(dp) :: gap_tolerance = 0.0_dp
       integer :: passes = 1
+      integer :: passes_token = 0            !! token of PASSES' value, 0 if not given
+      logical :: mortar = .false.            !! DISCRETIZATION Mortar
+      integer :: discretization_token = 0    !! token of DISCRETIZATION's value, 0 if not given
       logical :: has_eps_t = .false., has_point = .false., has_normal = .false.
       logical :: tangential_augmented = .false.   !! TMETHOD Augmented
       integer :: tmethod_token = 0           !! token of TMETHOD's value, 0 if not given
@@ -65,7 +68,7 @@ contains
    !> `PAIR <id> SLAVE <surface> MASTER <surface>|RIGID_PLANE [POINT x y z NORMAL nx ny nz]
    !>  [METHOD Penalty] [EPSN <eps_N>] [EPST <eps_T>] [PENALTY_FACTOR <c>] [MU <mu>]
    !>  [LAW Coulomb|Frictionless] [GAPTOL <g>] [PASSES 1|2] [NORMALS Facet|Smoothed|Auto]
-   !>  [FEATURE_ANGLE <degrees>]`, the keywords after the surfaces in any order (a deformable
+   !>  [FEATURE_ANGLE <degrees>] [DISCRETIZATION NodeToSegment|Mortar]`, the keywords after the surfaces in any order (a deformable
    !> master without NORMALS: Auto; without EPSN or EPST the penalty is automatic,
    !> set_automatic_penalties). The normal law's properties (EPSN) and the METHOD a pair without one gets
    !> come from the normal law registry; the friction properties (MU) and the law a pair without LAW gets from the
@@ -238,6 +241,7 @@ contains
             call require(reader, ok, options%gap_tolerance >= 0.0_dp, line, position - 1, &
                          'GAPTOL must not be negative')
          case ('PASSES')
+            options%passes_token = position
             call reader%take_integer(line, position, 'PASSES', options%passes, ok)
             call require(reader, ok, options%passes == 1 .or. options%passes == 2, line, position - 1, &
                          'PASSES must be 1 or 2')
@@ -258,6 +262,8 @@ contains
             call reader%take_word(line, position, 'a friction law', options%law, ok)
          case ('NORMALS')
             call read_normals(reader, line, position, options, ok)
+         case ('DISCRETIZATION')
+            call read_discretization(reader, line, position, options, ok)
          case ('FEATURE_ANGLE')
             options%feature_token = position
             call reader%take_real(line, position, 'FEATURE_ANGLE', options%feature_angle, ok)
@@ -279,11 +285,58 @@ contains
             call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
                                joined(spec_names(normal_specs))//', EPST, PENALTY_FACTOR, '// &
                                joined(spec_names(friction_specs))// &
-                               ', METHOD, TMETHOD, STICKTOL, PREDICT, LAW, GAPTOL, PASSES, NORMALS or FEATURE_ANGLE)')
+                               ', METHOD, TMETHOD, STICKTOL, PREDICT, LAW, GAPTOL, PASSES, NORMALS, FEATURE_ANGLE '// &
+                               'or DISCRETIZATION)')
             ok = .false.
          end select
       end do
    end subroutine read_pair_options
+
+   !> `DISCRETIZATION NodeToSegment|Mortar` (after DISCRETIZATION): node-to-segment contact
+   !> (the default) or mortar contact (frix_mortar_contact).
+   subroutine read_discretization(reader, line, position, options, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      type(pair_options_t), intent(inout) :: options
+      logical, intent(inout) :: ok
+      integer :: choice
+      options%discretization_token = position
+      call reader%take_choice(line, position, 'NodeToSegment or Mortar', &
+                              [character(len=13) :: 'NODETOSEGMENT', 'MORTAR'], &
+                              'DISCRETIZATION must be NodeToSegment or Mortar', choice, ok)
+      options%mortar = choice == 2
+   end subroutine read_discretization
+
+   !> DISCRETIZATION Mortar supports one pass against a deformable master with METHOD Penalty
+   !> (with or without friction), and has no choice of normals (the slave surface's averaged nodal
+   !> normals): anything else is reported at its keyword or value.
+   subroutine check_mortar(reader, line, options, pair, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      type(pair_options_t), intent(in) :: options
+      type(contact_pair_t), intent(in) :: pair
+      logical, intent(inout) :: ok
+      character(len=*), parameter :: what = 'DISCRETIZATION Mortar '
+      if (.not. (ok .and. options%mortar)) return
+      if (options%rigid) then
+         call reader%report(line, 6, what//'needs a deformable master surface, not a RIGID_PLANE')
+      else if (options%passes == 2) then
+         call reader%report(line, options%passes_token, what//'has one pass: PASSES 2 is node-to-segment''s')
+      else if (pair%parameters%normal%name /= 'PENALTY') then
+         call reader%report(line, options%method_token, what//'supports METHOD Penalty only, not METHOD '// &
+                            options%method)
+      else if (options%normals_token > 0) then
+         call reader%report(line, options%normals_token - 1, what//'takes no NORMALS (it uses the slave '// &
+                            'surface''s averaged nodal normals)')
+      else if (options%feature_token > 0) then
+         call reader%report(line, options%feature_token - 1, what//'takes no FEATURE_ANGLE (it uses the slave '// &
+                            'surface''s averaged nodal normals)')
+      else
+         return
+      end if
+      ok = .false.
+   end subroutine check_mortar
 
    !> `TMETHOD Penalty|Augmented` (after TMETHOD): how the stick traction is enforced.
    subroutine read_tangential_method(reader, line, position, options, ok)
@@ -402,7 +455,9 @@ contains
                       'PENALTY_FACTOR belongs to an automatic EPSN (a pair without EPSN)')
       if (ok) call set_tangential_method(reader, line, options, pair, ok)
       pair%penalty_factor = options%penalty_factor
-      if (ok) call set_normals(reader, model, line, options, pair, ok)
+      call check_mortar(reader, line, options, pair, ok)
+      pair%mortar = options%mortar
+      if (ok .and. .not. pair%mortar) call set_normals(reader, model, line, options, pair, ok)
    end subroutine make_pair_parameters
 
    !> The pair's normal field: Facet; Smoothed (feature angle 180 degrees: every adjacent face);

@@ -386,7 +386,7 @@ contains
       type(increment_results_t) :: results
       control%increment = control%increment + 1
       control%target_reached = control%path_control .and. .not. control%landing .and. control%final_increment
-      call commit_state(state)
+      call commit_state(state, model)
       call collect_results(model, control%step, control%increment, state, context, report, results, error)
       if (allocated(error)) return
       results%increment_size = control%size_now

@@ -16,7 +16,7 @@ module frix_state_restart
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t, commit_solution
    use frix_hdf5_results, only: read_restart, read_increment_array
-   use frix_contact_assembly, only: get_contact_history, set_contact_history
+   use frix_contact_assembly, only: get_contact_history, set_contact_history, restart_mortar_rows
    use frix_normal_contact_law, only: augmentation_t
    implicit none
    private
@@ -85,6 +85,7 @@ contains
             pass%committed_tangential_multiplier = values
          end associate
       end do
+      call restart_mortar_rows(model, state%contact, state%u)
    contains
       !> `contact/pass<p>_<name>` of the increment into `values` (sized by the caller); an
       !> error names the pass.

@@ -1,11 +1,11 @@
 #!/bin/bash
-# run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]... [--max-iterations N]
+# run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]... [--max-iterations N] [--pressure P]
 # V5 contact patch test: run frix on DECK (inputs/v5_contact_patch) in a scratch folder, then
 # v5_patch_check.py on the last increment (quantities and checks: see that script's header);
 # with --max-iterations, also fails when the run took more than N Newton iterations (frix's
-# `stat newton_iterations`).
+# `stat newton_iterations`); --pressure: the deck's top pressure (default the checker's, 100).
 set -u
-[ $# -ge 3 ] || { echo "usage: run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]... [--max-iterations N]" >&2; exit 2; }
+[ $# -ge 3 ] || { echo "usage: run_v5.sh FRIX DECK UPPER_DIVISIONS [--check KEY=LO:HI]... [--max-iterations N] [--pressure P]" >&2; exit 2; }
 frix=$1; deck=$2; upper=$3; shift 3
 here=$(cd "$(dirname "$0")" && pwd)
 args=()
@@ -14,6 +14,8 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --check) [ $# -ge 2 ] || { echo "run_v5.sh: --check needs KEY=LO:HI" >&2; exit 2; }
                  args+=(--check "$2"); shift 2 ;;
+        --pressure) [ $# -ge 2 ] || { echo "run_v5.sh: --pressure needs a value" >&2; exit 2; }
+                    args+=(--pressure "$2"); shift 2 ;;
         --max-iterations) [[ $# -ge 2 && $2 =~ ^[1-9][0-9]*$ ]] || \
                               { echo "run_v5.sh: --max-iterations needs a positive integer" >&2; exit 2; }
                           max_iterations=$2; shift 2 ;;

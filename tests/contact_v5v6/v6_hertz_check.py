@@ -22,6 +22,10 @@ Quantities (printed; --check KEY=LO:HI fails when outside):
     force_ratio  integral of p dx by the trapezoidal rule over the nodes (to the first open
                  node) / (P/2): the half model carries P/2
     max_err      max |p(x_i) - p_Hertz(x_i)| / p0 over the nodes with x_i <= 0.9 a
+    max_err_all  the same over every slave node (up to and beyond the contact edge)
+    ripple       max |e_i - (e_(i-1) + e_(i+1))/2| / p0 over the nodes 0 < x_i <= 0.9 a, e the
+                 error p - p_Hertz: how far a node's error stands off its neighbours' (a
+                 node-to-node ripple of amplitude r gives 2 r; a smooth error next to nothing)
 """
 import argparse
 import sys
@@ -88,6 +92,10 @@ def main(argv=None):
     hertz = p0 * np.sqrt(np.clip(1.0 - (x / a) ** 2, 0.0, None))
     inner = x <= 0.9 * a
     values["max_err"] = np.max(np.abs(p[inner] - hertz[inner])) / p0
+    values["max_err_all"] = np.max(np.abs(p - hertz)) / p0
+    error = (p - hertz) / p0
+    middle = [i for i in np.nonzero(inner)[0] if 0 < i < len(x) - 1]
+    values["ripple"] = max(abs(error[i] - 0.5 * (error[i - 1] + error[i + 1])) for i in middle)
     values["nodes_in_contact"] = float(last + 1)
 
     label = args.label or args.base.rsplit("/", 1)[-1]

@@ -7,6 +7,7 @@ module test_analysis_state
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_close
    use frix_analysis_state, only: analysis_state_t, commit_state, extrapolate_displacements
+   use frix_model, only: model_t
    implicit none
    private
 
@@ -15,6 +16,9 @@ module test_analysis_state
    !> displacements of two nodes at t = 1 and t = 1.25 (step 2 spans (1, 2])
    real(dp), parameter :: u_at_1(6) = [0.1_dp, -0.2_dp, 0.3_dp, 0.0_dp, 1.0_dp, -4.0_dp]
    real(dp), parameter :: u_at_125(6) = [0.15_dp, -0.1_dp, 0.3_dp, 2.0_dp, 1.5_dp, -4.5_dp]
+
+   !> A model without contact pairs: commit_state reads it only for mortar contact passes.
+   type(model_t) :: no_contact
 
 contains
 
@@ -34,10 +38,10 @@ contains
       state%committed_history = state%history
       state%time = 1.0_dp
       state%u = u_at_1
-      call commit_state(state)
+      call commit_state(state, no_contact)
       state%time = 1.25_dp
       state%u = u_at_125
-      call commit_state(state)
+      call commit_state(state, no_contact)
    end subroutine two_increments
 
    subroutine test_within_step(error)
@@ -68,7 +72,7 @@ contains
       ! step 2 ends with the increment 1.25 -> 2
       state%time = 2.0_dp
       state%u = 3*u_at_125
-      call commit_state(state)
+      call commit_state(state, no_contact)
       state%u = 0.0_dp
       call extrapolate_displacements(state, 2.25_dp)   ! step 3: the last increment was in step 2
       call check(error, all(state%u == 0.0_dp), 'the first increment of a step was extrapolated')
