@@ -23,7 +23,8 @@ module frix_mortar_assembly
 contains
 
    !> The mortar rows of `pass` at displacements u (current configuration), pass%face(i) a
-   !> master face overlapping slave i's faces (0: none), and the node pairs (2, n_missing) of
+   !> master face overlapping slave i's faces (0: none, or less than least_mortar_coverage of
+   !> the node's area covered), and the node pairs (2, n_missing) of
    !> the covered slave nodes' rows (with friction joined with their committed rows) that
    !> `matrix`'s pattern lacks.
    subroutine search_mortar_pass(model, pass, frictional, u, matrix, missing, n_missing)
@@ -39,6 +40,9 @@ contains
       call mortar_rows(current_coordinates(model, u), pass%slave_nodes, pass%slave_faces, pass%faces, pass%band, &
                        pass%mortar_rows)
       pass%face = pass%mortar_rows%master_face
+      ! a node whose faces the master covers less than least_mortar_coverage is open: no face
+      ! (its results are not written, as for a node-to-segment node without a face)
+      where (.not. pass%mortar_rows%dual_area >= least_mortar_coverage*pass%area) pass%face = 0
       allocate (missing(2, 64))
       n_missing = 0
       do i = 1, size(pass%slave_nodes)
@@ -93,7 +97,8 @@ contains
          do k = 1, n
             fint(3*node%nodes(k) - 2:3*node%nodes(k)) = fint(3*node%nodes(k) - 2:3*node%nodes(k)) + force(3*k - 2:3*k)
          end do
-         if (present(matrix)) call matrix%add_element(node%nodes, tangent)
+         ! an open node's zero block is not added (its node pairs may lie outside the pattern)
+         if (present(matrix) .and. any(tangent /= 0.0_dp)) call matrix%add_element(node%nodes, tangent)
          deallocate (force, tangent)
       end do
    end subroutine assemble_mortar_pass

@@ -264,8 +264,9 @@ contains
    end subroutine clip
 
    !> The triplets of n_rows rows as compressed rows: row j's nodes
-   !> nodes(start(j) + 1 : start(j + 1)) and values(same), repeated nodes summed and values
-   !> below `drop` (default 1e-12) times the row's largest dropped (merge_row; 0: only zeros).
+   !> nodes(start(j) + 1 : start(j + 1)) and values(same), repeated nodes summed; values whose
+   !> magnitude is below `drop` (default 1e-12) times the row's largest are dropped (merge_row;
+   !> drop = 0: only zeros).
    subroutine compress_rows(m, n_rows, start, nodes, values, drop)
       type(triplets_t), intent(in) :: m
       integer, intent(in) :: n_rows

@@ -42,7 +42,7 @@ def main(argv=None):
     first = data[(data["step"] == 1) & (data["increment"] == data["increment"][0])]
     areas = {int(n): area(x, y) for n, x, y in zip(first["node"], first["x"], first["y"])}
     values = {"stick_increments": 0.0, "stick_max_ratio": 0.0, "slip_increments": 0.0, "slip_ratio_err": 0.0,
-              "node_slip_err": 0.0, "lateral": 0.0}
+              "node_slip_err": 0.0, "lateral": 0.0, "along_drag": -float("inf")}
     for step, increment in sorted(set(zip(data["step"].astype(int), data["increment"].astype(int)))):
         rows = data[(data["step"] == step) & (data["increment"] == increment)]
         a = np.array([areas[int(n)] for n in rows["node"]])
@@ -61,6 +61,8 @@ def main(argv=None):
         if step == 1:
             values["press_ratio"] = abs(f_t) / f_n
             continue
+        # the friction traction on the slave opposes its drag towards +x: F_t / (mu F_n) <= 0
+        values["along_drag"] = max(values["along_drag"], f_t / (mu * f_n))
         if sticking.any():
             values["stick_max_ratio"] = max(values["stick_max_ratio"], abs(f_t) / (mu * f_n))
         if sticking.all():
