@@ -25,6 +25,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, __file__.rsplit("/tests/", 1)[0] + "/tests")
+from check_tally import check_ranges  # noqa: E402
+
 
 def area(x, y):
     w = lambda c: 1.0 / 6.0 if round(3 * c) in (0, 3) else 1.0 / 3.0   # noqa: E731
@@ -71,14 +74,7 @@ def main(argv=None):
             values["slip_increments"] += 1
             values["slip_ratio_err"] = max(values["slip_ratio_err"], abs(abs(f_t) / (mu * f_n) - 1.0))
     print("  ".join(f"{k}={v:.5g}" for k, v in values.items()))
-    status = 0
-    for check in args.check:
-        key, bounds = check.split("=")
-        lo, hi = (float(b) for b in bounds.split(":"))
-        ok = lo <= values[key] <= hi
-        print(f"  {'ok  ' if ok else 'FAIL'} {key} = {values[key]:.6g} in [{lo:g}, {hi:g}]")
-        status |= not ok
-    return status
+    return check_ranges(values, args.check)
 
 
 if __name__ == "__main__":

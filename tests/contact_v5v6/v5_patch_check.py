@@ -32,6 +32,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, __file__.rsplit("/tests/", 1)[0] + "/tests")
+from check_tally import check_ranges  # noqa: E402
+
 sys.path.insert(0, __file__.rsplit("/tests/", 1)[0] + "/postproc")
 import frix_results as fr  # noqa: E402
 
@@ -168,15 +171,7 @@ def main(argv=None):
 
     label = args.label or args.base.rsplit("/", 1)[-1]
     print(f"{label}: " + "  ".join(f"{k}={v:.10g}" if k == "pass_sum" else f"{k}={v:.4g}" for k, v in values.items()))
-    status = 0
-    for check in args.check:
-        key, bounds = check.split("=")
-        lo, hi = (float(b) for b in bounds.split(":"))
-        value = values[key]
-        ok = lo <= value <= hi
-        print(f"  {'ok  ' if ok else 'FAIL'} {key} = {value:.6g} in [{lo:g}, {hi:g}]")
-        status |= not ok
-    return status
+    return check_ranges(values, args.check)
 
 
 if __name__ == "__main__":

@@ -32,6 +32,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, __file__.rsplit("/tests/", 1)[0] + "/tests")
+from check_tally import check_ranges  # noqa: E402
+
 sys.path.insert(0, __file__.rsplit("/tests/", 1)[0] + "/postproc")
 import frix_results as fr  # noqa: E402
 
@@ -118,14 +121,7 @@ def main(argv=None):
         axes.grid(alpha=0.3)
         axes.legend()
         fr.save_figure(figure, args.plot, dpi=100)
-    status = 0
-    for check in args.check:
-        key, bounds = check.split("=")
-        lo, hi = (float(b) for b in bounds.split(":"))
-        ok = lo <= values[key] <= hi
-        print(f"  {'ok  ' if ok else 'FAIL'} {key} = {values[key]:.6g} in [{lo:g}, {hi:g}]")
-        status |= not ok
-    return status
+    return check_ranges(values, args.check)
 
 
 if __name__ == "__main__":
