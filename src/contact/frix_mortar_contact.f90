@@ -105,7 +105,9 @@ contains
    end subroutine mortar_rows
 
    !> n_j: minus the normalised sum of the unit outward normals of the slave faces at node j
-   !> (at the node's corner of each face), i.e. out of the master body.
+   !> (at the node's corner of each face), i.e. out of the master body. A face with no normal at
+   !> the node's corner (zero area, or a node coinciding with a neighbour: face_normal gives the
+   !> zero vector) adds nothing; a node with no normal at all keeps n_j = 0.
    function slave_nodal_normals(coords, slave_nodes, slave_faces) result(normal)
       real(dp), intent(in) :: coords(:, :)
       integer, intent(in) :: slave_nodes(:), slave_faces(:, :)

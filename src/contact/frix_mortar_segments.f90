@@ -109,7 +109,8 @@ contains
 
    !> The integrals over the overlap of slave face x_slave and master face x_master:
    !> master_part(j, a) = int phi_j N_a^m dA, slave_part(j, k) = int phi_j N_k^s dA (area).
-   !> overlap = .false. (both zero) when the master face faces the same way as the slave face,
+   !> overlap = .false. (both zero) when either face has zero area (no normal: face_normal),
+   !> the master face faces the same way as the slave face,
    !> its centre lies farther than `distance` from the slave face's plane, or the projections
    !> do not overlap.
    subroutine segment_integrals(x_slave, x_master, distance, master_part, slave_part, overlap)
@@ -126,9 +127,8 @@ contains
       normal = face_normal(x_slave, [0.0_dp, 0.0_dp])
       if (dot_product(face_normal(x_master, [0.0_dp, 0.0_dp]), normal) >= 0.0_dp) return
       if (abs(dot_product(0.25_dp*sum(x_master, dim=2) - centre, normal)) > distance) return
-      e1 = x_slave(:, 2) - x_slave(:, 1)
-      e1 = e1 - dot_product(e1, normal)*normal
-      e1 = e1/norm2(e1)
+      ! a zero-area slave face has a zero normal and was left above (the dot product is 0)
+      if (.not. in_plane_axis(x_slave, normal, e1)) return
       e2 = cross_product(normal, e1)
       do a = 1, 4
          slave_2d(:, a) = [dot_product(x_slave(:, a) - centre, e1), dot_product(x_slave(:, a) - centre, e2)]
@@ -145,6 +145,27 @@ contains
          call add_triangle(polygon(:, [1, t, t + 1]), centre, e1, e2, x_slave, x_master, c, master_part, slave_part)
       end do
    end subroutine segment_integrals
+
+   !> e1: the unit in-plane direction (normal `normal`) of the first edge of x_face whose
+   !> projection onto the plane is not zero (edge 1-2 unless nodes 1 and 2 coincide); .false.
+   !> when every edge projects to zero (a collapsed face).
+   logical function in_plane_axis(x_face, normal, e1) result(found)
+      real(dp), intent(in) :: x_face(3, 4), normal(3)
+      real(dp), intent(out) :: e1(3)
+      real(dp) :: length
+      integer :: a
+      found = .false.
+      do a = 1, 4
+         e1 = x_face(:, mod(a, 4) + 1) - x_face(:, a)
+         e1 = e1 - dot_product(e1, normal)*normal
+         length = norm2(e1)
+         if (length > 0.0_dp) then
+            e1 = e1/length
+            found = .true.
+            return
+         end if
+      end do
+   end function in_plane_axis
 
    !> The dual basis coefficients of a slave face: phi_j = sum_k c(j, k) N_k with
    !> c = D M^-1, M_jk = int N_j N_k dA, D = diag(int N_j dA) (3 x 3 Gauss: exact on a

@@ -18,9 +18,13 @@
 !>   1e-7, tolerance 1e-8 as in test_contact_fixtures); all three against the full force, the
 !>   rows recomputed, up to the terms the tangent leaves out (docs/contact.md, "Mortar
 !>   contact"; test_tangent);
+!> - degenerate faces (all four nodes at one point; two nodes coinciding, a triangle): no NaN
+!>   anywhere, the collapsed face contributes nothing (zero normal and D_j at its nodes), the
+!>   triangle over a larger master face is covered and D_j = sum_l M_jl there (sum_a N_a^m = 1);
 !> - the weighted slip increment sum_k (c^n_jk - c_jk) x_k of a slave grid slid by s over a
 !>   flat master: D_j s (the integrals are exact there); of both grids moved rigidly: 0.
 module test_mortar_contact
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_close
@@ -43,7 +47,8 @@ contains
       tests = [new_unittest('half-covered unit face: D and M by hand', test_half_face), &
                new_unittest('covered grid: D = tributary area, sum M = D, linear gap', test_covered_grid), &
                new_unittest('tangent against central differences (frictionless, stick, slip)', test_tangent), &
-               new_unittest('objective slip: a slide gives D_j s, a rigid motion none', test_objective_slip)]
+               new_unittest('objective slip: a slide gives D_j s, a rigid motion none', test_objective_slip), &
+               new_unittest('degenerate faces: zero area and coincident nodes give no NaN', test_degenerate_faces)]
    end subroutine collect_mortar_contact
 
    subroutine test_half_face(error)
@@ -196,6 +201,41 @@ contains
          deallocate (fint, tangent)
       end do
    end subroutine test_tangent
+
+   !> Slave faces: the unit square (nodes 1-4, z = 0, outward -z) and one collapsed onto the
+   !> point (2, 2, 0) (nodes 5-8); master: one face over [-1, 3]^2 at z = -0.1 (nodes 9-12,
+   !> outward +z). Then the triangle of the unit square with nodes 1 and 2 coinciding.
+   subroutine test_degenerate_faces(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: coords(3, 12), master_part(4, 4), slave_part(4, 4)
+      type(mortar_rows_t) :: rows
+      logical :: overlap
+      integer :: i
+      coords(:, 1:4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                1.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp], [3, 4])
+      coords(:, 5:8) = spread([2.0_dp, 2.0_dp, 0.0_dp], 2, 4)
+      coords(:, 9:12) = reshape([-1.0_dp, -1.0_dp, -0.1_dp, 3.0_dp, -1.0_dp, -0.1_dp, &
+                                 3.0_dp, 3.0_dp, -0.1_dp, -1.0_dp, 3.0_dp, -0.1_dp], [3, 4])
+      call mortar_rows(coords, [(i, i=1, 8)], reshape([1, 2, 3, 4, 5, 6, 7, 8], [4, 2]), &
+                       reshape([9, 10, 11, 12], [4, 1]), 0.5_dp, rows)
+      call check(error, all(ieee_is_finite(rows%normal)) .and. all(ieee_is_finite(rows%dual_area)) .and. &
+                 all(ieee_is_finite(rows%weight)), 'a collapsed face gives a NaN')
+      if (allocated(error)) return
+      call check(error, all(rows%normal(:, 5:8) == 0.0_dp) .and. all(rows%dual_area(5:8) == 0.0_dp) .and. &
+                 all(abs(rows%dual_area(1:4) - 0.25_dp) <= 1.0e-14_dp), &
+                 'collapsed face: D_j '//to_string(rows%dual_area(5))//', unit square: '//to_string(rows%dual_area(1)))
+      if (allocated(error)) return
+      coords(:, 2) = coords(:, 1)
+      call segment_integrals(coords(:, 1:4), coords(:, 9:12), 0.5_dp, master_part, slave_part, overlap)
+      call check(error, overlap .and. all(ieee_is_finite(master_part)) .and. all(ieee_is_finite(slave_part)), &
+                 'coincident nodes: no overlap or a NaN')
+      if (allocated(error)) return
+      call check(error, maxval(abs(sum(master_part, dim=2) - sum(slave_part, dim=2))) <= 1.0e-12_dp, &
+                 'coincident nodes: sum_l M_jl /= D_j')
+      if (allocated(error)) return
+      call segment_integrals(coords(:, 5:8), coords(:, 9:12), 0.5_dp, master_part, slave_part, overlap)
+      call check(error, .not. overlap .and. all(master_part == 0.0_dp), 'a collapsed face overlaps')
+   end subroutine test_degenerate_faces
 
    !> A node's matrix on its nodes placed into the (123, 123) matrix of the 41 grid nodes.
    pure function scattered(nodes, local) result(global)
