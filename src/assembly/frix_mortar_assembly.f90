@@ -14,7 +14,7 @@ module frix_mortar_assembly
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_open
    use frix_mortar_contact, only: mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, &
-                                  mortar_touching_stiffness, least_mortar_coverage
+                                  mortar_touching_stiffness, mortar_covered
    implicit none
    private
 
@@ -23,8 +23,8 @@ module frix_mortar_assembly
 contains
 
    !> The mortar rows of `pass` at displacements u (current configuration), pass%face(i) a
-   !> master face overlapping slave i's faces (0: none, or less than least_mortar_coverage of
-   !> the node's area covered), and the node pairs (2, n_missing) of
+   !> master face overlapping slave i's faces (0: none, or the node not covered enough:
+   !> mortar_covered), and the node pairs (2, n_missing) of
    !> the covered slave nodes' rows (with friction joined with their committed rows) that
    !> `matrix`'s pattern lacks.
    subroutine search_mortar_pass(model, pass, frictional, u, matrix, missing, n_missing)
@@ -40,13 +40,13 @@ contains
       call mortar_rows(current_coordinates(model, u), pass%slave_nodes, pass%slave_faces, pass%faces, pass%band, &
                        pass%mortar_rows)
       pass%face = pass%mortar_rows%master_face
-      ! a node whose faces the master covers less than least_mortar_coverage is open: no face
-      ! (its results are not written, as for a node-to-segment node without a face)
-      where (.not. pass%mortar_rows%dual_area >= least_mortar_coverage*pass%area) pass%face = 0
       allocate (missing(2, 64))
       n_missing = 0
       do i = 1, size(pass%slave_nodes)
-         if (.not. pass%mortar_rows%dual_area(i) >= least_mortar_coverage*pass%area(i)) cycle
+         ! a node the master does not cover enough is open: no face (its results are not
+         ! written, as for a node-to-segment node without a face)
+         if (.not. mortar_covered(pass%mortar_rows, i)) pass%face(i) = 0
+         if (pass%face(i) == 0) cycle
          call slave_node(pass, frictional, i, node)
          do a = 1, size(node%nodes)
             do b = a + 1, size(node%nodes)

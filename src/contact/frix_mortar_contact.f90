@@ -39,6 +39,7 @@
 module frix_mortar_contact
    use frix_kinds, only: dp
    use frix_face_projection, only: face_normal, face_node_xi, face_node_eta
+   use frix_surface_load, only: face_area_weights
    use frix_dual_number, only: dual_t, dual_variable
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_stick, contact_slip
@@ -47,19 +48,23 @@ module frix_mortar_contact
    private
 
    public :: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, mortar_touching_stiffness
-   public :: least_mortar_coverage
+   public :: least_mortar_coverage, mortar_covered
 
    !> A slave node takes part in the contact when the master covers this fraction of its
-   !> tributary area A_j (D_j >= least_mortar_coverage A_j), as a tied node (frix_tie_pass).
+   !> current tributary area a_j = int N_j dA over its current slave faces
+   !> (D_j >= least_mortar_coverage a_j, both in the current configuration, so that a slave
+   !> surface stretched or shrunk in its plane keeps its covered nodes), as a tied node
+   !> (frix_tie_pass, where both are in the reference configuration).
    real(dp), parameter :: least_mortar_coverage = 0.5_dp
 
    !> The mortar rows of a pass's slave nodes: row j's nodes nodes(start(j) + 1 : start(j + 1))
-   !> (mesh numbers, slave and master) with coefficients c_jk (area), D_j (area), the normal
-   !> n_j (unit, out of the master body) and a master face overlapping node j's faces (0: none).
+   !> (mesh numbers, slave and master) with coefficients c_jk (area), D_j (area), the current
+   !> tributary area a_j (area), the normal n_j (unit, out of the master body) and a master
+   !> face overlapping node j's faces (0: none).
    type :: mortar_rows_t
       integer, allocatable :: start(:), nodes(:)
       real(dp), allocatable :: weight(:)
-      real(dp), allocatable :: dual_area(:)
+      real(dp), allocatable :: dual_area(:), tributary_area(:)
       real(dp), allocatable :: normal(:, :)
       integer, allocatable :: master_face(:)
    end type mortar_rows_t
@@ -67,12 +72,13 @@ module frix_mortar_contact
    !> One slave node's evaluation: the nodes of its current row and, with friction, of its
    !> committed row (mesh numbers), their current positions (3, n; the caller's), the current
    !> and committed coefficients on them (0 where a node is not in that row), D_j (area), the
-   !> tributary area A_j (reference), n_j and the committed traction t^n (force/area).
+   !> tributary areas A_j (reference, the results' divisor) and a_j (current, the coverage's),
+   !> n_j and the committed traction t^n (force/area).
    type :: mortar_node_t
       integer, allocatable :: nodes(:)
       real(dp), allocatable :: x(:, :)
       real(dp), allocatable :: weight(:), committed_weight(:)
-      real(dp) :: dual_area = 0.0_dp, area = 0.0_dp
+      real(dp) :: dual_area = 0.0_dp, area = 0.0_dp, tributary_area = 0.0_dp
       real(dp) :: normal(3) = 0.0_dp, committed_traction(3) = 0.0_dp
    end type mortar_node_t
 
@@ -102,7 +108,42 @@ contains
       call compress_rows(m, n_slave, rows%start, rows%nodes, rows%weight, drop=0.0_dp)
       rows%weight = -rows%weight
       rows%normal = slave_nodal_normals(coords, slave_nodes, slave_faces)
+      rows%tributary_area = tributary_areas(coords, slave_nodes, slave_faces)
    end subroutine mortar_rows
+
+   !> a_j = int N_j dA over the slave faces at node j at the coordinates `coords` (area;
+   !> face_area_weights, as the reference A_j of frix_contact_pass).
+   function tributary_areas(coords, slave_nodes, slave_faces) result(area)
+      real(dp), intent(in) :: coords(:, :)
+      integer, intent(in) :: slave_nodes(:), slave_faces(:, :)
+      real(dp) :: area(size(slave_nodes))
+      integer, allocatable :: position_of(:)
+      real(dp) :: weights(4)
+      integer :: f, j
+      allocate (position_of(size(coords, 2)), source=0)
+      do j = 1, size(slave_nodes)
+         position_of(slave_nodes(j)) = j
+      end do
+      area = 0.0_dp
+      do f = 1, size(slave_faces, 2)
+         call face_area_weights(coords(:, slave_faces(:, f)), weights)
+         area(position_of(slave_faces(:, f))) = area(position_of(slave_faces(:, f))) + weights
+      end do
+   end function tributary_areas
+
+   !> Whether slave node j of `rows` takes part: D_j >= least_mortar_coverage a_j (false for
+   !> a NaN, and for a node with no area).
+   pure logical function mortar_covered(rows, j)
+      type(mortar_rows_t), intent(in) :: rows
+      integer, intent(in) :: j
+      mortar_covered = covers(rows%dual_area(j), rows%tributary_area(j))
+   end function mortar_covered
+
+   !> D_j >= least_mortar_coverage a_j and D_j > 0 (both area).
+   pure logical function covers(dual_area, tributary_area)
+      real(dp), intent(in) :: dual_area, tributary_area
+      covers = dual_area >= least_mortar_coverage*tributary_area .and. dual_area > 0.0_dp
+   end function covers
 
    !> n_j: minus the normalised sum of the unit outward normals of the slave faces at node j
    !> (at the node's corner of each face), i.e. out of the master body. A face with no normal at
@@ -132,10 +173,10 @@ contains
       end do
    end function slave_nodal_normals
 
-   !> Slave node j of `rows` (tributary area `area`) as mortar_node_contact takes it, without
-   !> positions; with `committed` (friction) also the committed row and traction. A node not
-   !> covered at the last converged increment (D^n_j < least_mortar_coverage A_j) starts from
-   !> the current row: no slip increment.
+   !> Slave node j of `rows` (reference tributary area `area`) as mortar_node_contact takes it,
+   !> without positions; with `committed` (friction) also the committed row and traction. A
+   !> node not covered at the last converged increment (mortar_covered) starts from the current
+   !> row: no slip increment.
    subroutine mortar_node(rows, j, area, node, committed, committed_traction)
       type(mortar_rows_t), intent(in) :: rows
       integer, intent(in) :: j
@@ -149,10 +190,11 @@ contains
       node%committed_weight = node%weight
       node%dual_area = rows%dual_area(j)
       node%area = area
+      node%tributary_area = rows%tributary_area(j)
       node%normal = rows%normal(:, j)
       if (.not. present(committed)) return
       node%committed_traction = committed_traction
-      if (.not. committed%dual_area(j) >= least_mortar_coverage*area) return
+      if (.not. mortar_covered(committed, j)) return
       node%committed_weight = 0.0_dp
       do k = committed%start(j) + 1, committed%start(j + 1)
          position = findloc(node%nodes, committed%nodes(k), dim=1)
@@ -171,7 +213,7 @@ contains
    !> p_j is per current area; the traction t_j the same way; normal n_j; status; the plastic
    !> slip (|t_trial| - |t|) / eps_T of the increment), the internal force fint = -(forces on
    !> the nodes) (3 per node of `node`, node-major) and its tangent with the mortar
-   !> coefficients and n_j fixed (force/length). A node with D_j < least_mortar_coverage A_j is
+   !> coefficients and n_j fixed (force/length). A node with D_j < least_mortar_coverage a_j is
    !> open with gap huge; a node the law does not make active is open with its gap.
    !> friction_scale multiplies the pressure the friction law sees (friction continuation);
    !> branch: the friction branch (frix_friction_law).
@@ -190,7 +232,7 @@ contains
       tangent = 0.0_dp
       result%normal = node%normal
       result%gap = huge(1.0_dp)
-      if (.not. node%dual_area >= least_mortar_coverage*node%area) return
+      if (.not. covers(node%dual_area, node%tributary_area)) return
       associate (c => node%weight, n => node%normal, dual_area => node%dual_area)
          result%gap = dot_product(n, matmul(node%x, c))/dual_area
          if (.not. parameters%normal%active(result%gap, 0.0_dp)) return

@@ -21,6 +21,11 @@
 !> - degenerate faces (all four nodes at one point; two nodes coinciding, a triangle): no NaN
 !>   anywhere, the collapsed face contributes nothing (zero normal and D_j at its nodes), the
 !>   triangle over a larger master face is covered and D_j = sum_l M_jl there (sum_a N_a^m = 1);
+!> - the slave grid shrunk in its plane by 0.6 about its centre (area 0.36 of the reference,
+!>   below least_mortar_coverage = 0.5 of the reference tributary area) and pressed 1e-6 into
+!>   the master (so tilted as the master, z = -0.1 - 1e-6 + 0.05 x): every node covered,
+!>   a_j = 0.36 sqrt(1 + 0.05^2) times the flat grid's tributary area (1/9, 1/18, 1/36; the
+!>   faces are parallelograms, exact), the interior node 6 in contact;
 !> - the weighted slip increment sum_k (c^n_jk - c_jk) x_k of a slave grid slid by s over a
 !>   flat master: D_j s (the integrals are exact there); of both grids moved rigidly: 0.
 module test_mortar_contact
@@ -30,7 +35,8 @@ module test_mortar_contact
    use frix_testing, only: unittest_t, new_unittest, check, check_close
    use frix_strings, only: to_string
    use frix_mortar_segments, only: segment_integrals
-   use frix_mortar_contact, only: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact
+   use frix_mortar_contact, only: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, &
+                                  mortar_covered
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_slip, contact_stick
    use frix_friction_law, only: branch_free
@@ -48,7 +54,9 @@ contains
                new_unittest('covered grid: D = tributary area, sum M = D, linear gap', test_covered_grid), &
                new_unittest('tangent against central differences (frictionless, stick, slip)', test_tangent), &
                new_unittest('objective slip: a slide gives D_j s, a rigid motion none', test_objective_slip), &
-               new_unittest('degenerate faces: zero area and coincident nodes give no NaN', test_degenerate_faces)]
+               new_unittest('degenerate faces: zero area and coincident nodes give no NaN', test_degenerate_faces), &
+               new_unittest('coverage in the current configuration: a shrunk slave grid stays covered', &
+                            test_shrunk_coverage)]
    end subroutine collect_mortar_contact
 
    subroutine test_half_face(error)
@@ -236,6 +244,33 @@ contains
       call segment_integrals(coords(:, 5:8), coords(:, 9:12), 0.5_dp, master_part, slave_part, overlap)
       call check(error, .not. overlap .and. all(master_part == 0.0_dp), 'a collapsed face overlaps')
    end subroutine test_degenerate_faces
+
+   subroutine test_shrunk_coverage(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: factor = 0.6_dp
+      real(dp), parameter :: tilt = sqrt(1.0_dp + 0.05_dp**2)   ! area of the tilted plane per flat area
+      real(dp) :: coords(3, 41), fint(3*41), tangent(3*41, 3*41)
+      type(mortar_rows_t) :: rows
+      type(mortar_node_t) :: node
+      type(contact_point_result_t) :: result
+      integer :: j
+      call grid_rows(coords, rows)
+      coords(1:2, :16) = 0.5_dp + factor*(coords(1:2, :16) - 0.5_dp)
+      coords(3, :16) = -0.1_dp - 1.0e-6_dp + 0.05_dp*coords(1, :16)
+      call committed_rows(coords, rows)
+      call check(error, all([(mortar_covered(rows, j), j=1, 16)]), 'a node of the shrunk grid is not covered')
+      if (allocated(error)) return
+      call check_close(error, rows%tributary_area(6), factor**2*tilt/9.0_dp, 1.0e-13_dp, message='a_6')
+      if (allocated(error)) return
+      call check_close(error, rows%tributary_area(1), factor**2*tilt/36.0_dp, 1.0e-13_dp, message='a_1')
+      if (allocated(error)) return
+      call mortar_node(rows, 6, 1.0_dp/9.0_dp, node)
+      node%x = coords(:, node%nodes)
+      call mortar_node_contact(make_parameters(0.0_dp), node, 1.0_dp, branch_free, result, &
+                               fint(:3*size(node%nodes)), tangent(:3*size(node%nodes), :3*size(node%nodes)))
+      call check(error, result%status == contact_slip .and. result%pressure > 0.0_dp, &
+                 'node 6 of the shrunk grid: status '//to_string(result%status)//', gap '//to_string(result%gap))
+   end subroutine test_shrunk_coverage
 
    !> A node's matrix on its nodes placed into the (123, 123) matrix of the 41 grid nodes.
    pure function scattered(nodes, local) result(global)
