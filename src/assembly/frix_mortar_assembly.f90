@@ -104,7 +104,8 @@ contains
    end subroutine assemble_mortar_pass
 
    !> Slave node i of `pass` as frix_mortar_contact evaluates it (positions not set); with
-   !> friction joined with its committed row and traction.
+   !> friction joined with its committed row and traction where it was closed at the last
+   !> converged increment (pass%has_anchor).
    subroutine slave_node(pass, frictional, i, node)
       type(contact_pass_t), intent(in) :: pass
       logical, intent(in) :: frictional
@@ -112,16 +113,17 @@ contains
       type(mortar_node_t), intent(out) :: node
       if (frictional) then
          call mortar_node(pass%mortar_rows, i, pass%area(i), node, pass%committed_mortar_rows, &
-                          pass%committed_mortar_traction(:, i))
+                          pass%committed_mortar_traction(:, i), pass%has_anchor(i))
       else
          call mortar_node(pass%mortar_rows, i, pass%area(i), node)
       end if
    end subroutine slave_node
 
    !> A converged increment at displacements u: the rows there (computed again, as a restart
-   !> computes them, restart_mortar_pass, so that a restarted run continues exactly) and each
+   !> computes them, restart_mortar_pass, so that a restarted run continues exactly), each
    !> node's traction t_j (per current area: the written traction times A_j / D_j; 0 where
-   !> open) become the committed ones, and the plastic slip is accumulated.
+   !> open) and whether it is closed (pass%has_anchor, kept in the restart history) become the
+   !> committed ones, and the plastic slip is accumulated.
    subroutine commit_mortar_pass(model, pass, u)
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
@@ -130,7 +132,8 @@ contains
       call restart_mortar_pass(model, pass, u, .true.)
       do i = 1, size(pass%slave_nodes)
          pass%committed_mortar_traction(:, i) = 0.0_dp
-         if (pass%result(i)%status == contact_open) cycle
+         pass%has_anchor(i) = pass%result(i)%status /= contact_open
+         if (.not. pass%has_anchor(i)) cycle
          pass%committed_mortar_traction(:, i) = pass%result(i)%traction*pass%area(i)/pass%mortar_rows%dual_area(i)
          pass%slip(i) = pass%slip(i) + pass%result(i)%slip_increment
       end do
@@ -138,17 +141,21 @@ contains
 
    !> The committed rows of a mortar pass at the committed displacements u (set-up: u = 0; a
    !> restart: the displacements read back), the tractions zero unless kept (`keep_traction`,
-   !> restored from the restart history).
+   !> restored from the restart history with pass%has_anchor); at the set-up a node the master
+   !> covers counts as closed (pass%has_anchor), so that friction acts from the first increment
+   !> on bodies touching at the start, as node-to-segment's initial anchors.
    subroutine restart_mortar_pass(model, pass, u, keep_traction)
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
       real(dp), intent(in) :: u(:)
       logical, intent(in) :: keep_traction
+      integer :: i
       call mortar_rows(current_coordinates(model, u), pass%slave_nodes, pass%slave_faces, pass%faces, pass%band, &
                        pass%committed_mortar_rows)
       if (.not. keep_traction .or. .not. allocated(pass%committed_mortar_traction)) then
          if (allocated(pass%committed_mortar_traction)) deallocate (pass%committed_mortar_traction)
          allocate (pass%committed_mortar_traction(3, size(pass%slave_nodes)), source=0.0_dp)
+         pass%has_anchor = [(mortar_covered(pass%committed_mortar_rows, i), i=1, size(pass%slave_nodes))]
       end if
    end subroutine restart_mortar_pass
 

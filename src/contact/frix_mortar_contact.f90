@@ -175,15 +175,18 @@ contains
 
    !> Slave node j of `rows` (reference tributary area `area`) as mortar_node_contact takes it,
    !> without positions; with `committed` (friction) also the committed row and traction. A
-   !> node not covered at the last converged increment (mortar_covered) starts from the current
-   !> row: no slip increment.
-   subroutine mortar_node(rows, j, area, node, committed, committed_traction)
+   !> node not in contact at the last converged increment (`committed_closed` false: open
+   !> there, or not covered at the set-up) or not covered then (mortar_covered) starts from the
+   !> current row: no slip increment, so that its motion before it touches is not taken as slip
+   !> (as a node-to-segment node that closes starts from its closest point).
+   subroutine mortar_node(rows, j, area, node, committed, committed_traction, committed_closed)
       type(mortar_rows_t), intent(in) :: rows
       integer, intent(in) :: j
       real(dp), intent(in) :: area
       type(mortar_node_t), intent(out) :: node
       type(mortar_rows_t), intent(in), optional :: committed
       real(dp), intent(in), optional :: committed_traction(3)
+      logical, intent(in), optional :: committed_closed   !! with `committed`
       integer :: k, position
       node%nodes = rows%nodes(rows%start(j) + 1:rows%start(j + 1))
       node%weight = rows%weight(rows%start(j) + 1:rows%start(j + 1))
@@ -194,7 +197,7 @@ contains
       node%normal = rows%normal(:, j)
       if (.not. present(committed)) return
       node%committed_traction = committed_traction
-      if (.not. mortar_covered(committed, j)) return
+      if (.not. (committed_closed .and. mortar_covered(committed, j))) return
       node%committed_weight = 0.0_dp
       do k = committed%start(j) + 1, committed%start(j + 1)
          position = findloc(node%nodes, committed%nodes(k), dim=1)

@@ -26,6 +26,11 @@
 !>   the master (so tilted as the master, z = -0.1 - 1e-6 + 0.05 x): every node covered,
 !>   a_j = 0.36 sqrt(1 + 0.05^2) times the flat grid's tributary area (1/9, 1/18, 1/36; the
 !>   faces are parallelograms, exact), the interior node 6 in contact;
+!> - first touch: the slave grid 0.1 above the flat master (open) at the last commit, now slid
+!>   by s = (0.03, -0.02) and pressed 1e-6 into it (mu 0.3): the interior node, started from
+!>   its current row as a node open at the last commit, has no tangential traction (exactly 0:
+!>   no slip increment), where taking the committed row would give it the slip traction
+!>   mu p_j (|s| = 0.036 is far beyond the stick limit mu p_j / eps_T);
 !> - the weighted slip increment sum_k (c^n_jk - c_jk) x_k of a slave grid slid by s over a
 !>   flat master: D_j s (the integrals are exact there); of both grids moved rigidly: 0.
 module test_mortar_contact
@@ -56,7 +61,8 @@ contains
                new_unittest('objective slip: a slide gives D_j s, a rigid motion none', test_objective_slip), &
                new_unittest('degenerate faces: zero area and coincident nodes give no NaN', test_degenerate_faces), &
                new_unittest('coverage in the current configuration: a shrunk slave grid stays covered', &
-                            test_shrunk_coverage)]
+                            test_shrunk_coverage), &
+               new_unittest('first touch: motion before contact is no slip', test_first_touch)]
    end subroutine collect_mortar_contact
 
    subroutine test_half_face(error)
@@ -184,7 +190,7 @@ contains
       call committed_rows(back, committed)
       call committed_rows(coords, rows)
       do m = 1, 3
-         call mortar_node(rows, j, 1.0_dp/9.0_dp, node, committed, traction)
+         call mortar_node(rows, j, 1.0_dp/9.0_dp, node, committed, traction, .true.)
          node%x = coords(:, node%nodes)
          allocate (fint(3*size(node%nodes)), tangent(3*size(node%nodes), 3*size(node%nodes)))
          call mortar_node_contact(make_parameters(coefficients(m)), node, 1.0_dp, branch_free, result, fint, tangent)
@@ -321,7 +327,7 @@ contains
       real(dp), allocatable :: fint(:), tangent(:, :)
       integer :: a
       call committed_rows(coords, rows)
-      call mortar_node(rows, 6, 1.0_dp/9.0_dp, node, committed, traction)
+      call mortar_node(rows, 6, 1.0_dp/9.0_dp, node, committed, traction, .true.)
       node%x = coords(:, node%nodes)
       allocate (fint(3*size(node%nodes)), tangent(3*size(node%nodes), 3*size(node%nodes)))
       call mortar_node_contact(parameters, node, 1.0_dp, branch_free, result, fint, tangent)
@@ -383,7 +389,7 @@ contains
       moved(:, :16) = moved(:, :16) + spread(s, 2, 16)
       call committed_rows(moved, after)
       do j = 1, 16
-         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp])
+         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp], .true.)
          slip = matmul(moved(:, node%nodes), node%committed_weight - node%weight)
          call check(error, norm2(slip - after%dual_area(j)*s) <= 1.0e-13_dp*after%dual_area(j)*norm2(s), &
                     'slid: node '//to_string(j)//' slip off by '//to_string(norm2(slip/after%dual_area(j) - s)))
@@ -394,13 +400,49 @@ contains
       moved = matmul(rotation, coords) + spread([0.4_dp, -1.0_dp, 2.0_dp], 2, 41)
       call committed_rows(moved, after)
       do j = 1, 16
-         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp])
+         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp], .true.)
          slip = matmul(moved(:, node%nodes), node%committed_weight - node%weight)
          call check(error, norm2(slip) <= 1.0e-13_dp*after%dual_area(j), &
                     'rigid motion: node '//to_string(j)//' slip '//to_string(norm2(slip)/after%dual_area(j)))
          if (allocated(error)) return
       end do
    end subroutine test_objective_slip
+
+   subroutine test_first_touch(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: s(3) = [0.03_dp, -0.02_dp, 0.0_dp]
+      real(dp) :: coords(3, 41), moved(3, 41), fint(3*41), tangent(3*41, 3*41), pressure
+      type(mortar_rows_t) :: before, after
+      type(mortar_node_t) :: node
+      type(contact_point_result_t) :: result
+      logical :: closed
+      integer :: n, case
+      call grid_rows(coords, before)
+      coords(3, 17:) = -0.1_dp
+      call committed_rows(coords, before)
+      moved = coords
+      moved(:, :16) = moved(:, :16) + spread(s, 2, 16)
+      moved(3, :16) = -0.1_dp - 1.0e-6_dp
+      call committed_rows(moved, after)
+      do case = 1, 2
+         closed = case == 2   ! 1: open at the last commit (the node's state); 2: taken as closed
+         call mortar_node(after, 6, 1.0_dp/9.0_dp, node, before, [0.0_dp, 0.0_dp, 0.0_dp], closed)
+         node%x = moved(:, node%nodes)
+         n = 3*size(node%nodes)
+         call mortar_node_contact(make_parameters(0.3_dp), node, 1.0_dp, branch_free, result, fint(:n), &
+                                  tangent(:n, :n))
+         pressure = result%pressure
+         if (.not. closed) then
+            call check(error, pressure > 0.0_dp .and. all(result%traction == 0.0_dp), &
+                       'open at the last commit: traction '//to_string(norm2(result%traction))//', pressure '// &
+                       to_string(pressure))
+         else
+            call check_close(error, norm2(result%traction), 0.3_dp*pressure, 1.0e-12_dp, &
+                             message='closed at the last commit: |t| against mu p')
+         end if
+         if (allocated(error)) return
+      end do
+   end subroutine test_first_touch
 
    !> Rodrigues: rotation by `angle` (rad) about the unit `axis`.
    pure function rotation_matrix(axis, angle) result(r)
