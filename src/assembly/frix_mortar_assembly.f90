@@ -77,6 +77,8 @@ contains
       integer :: i, k, n
       tangential_penalty = 0.0_dp
       if (.not. parameters%friction%frictionless()) tangential_penalty = parameters%tangential_penalty
+      ! room for a row's force and tangent, grown (not allocated per node) as longer rows come
+      allocate (force(0), tangent(0, 0))
       do i = 1, size(pass%slave_nodes)
          if (pass%face(i) == 0) then
             pass%result(i) = contact_point_result_t()
@@ -89,17 +91,24 @@ contains
          do k = 1, n
             node%x(:, k) = model%mesh%coords(:, node%nodes(k)) + u(3*node%nodes(k) - 2:3*node%nodes(k))
          end do
-         allocate (force(3*n), tangent(3*n, 3*n))
-         call mortar_node_contact(parameters, node, friction_scale, pass%branch(i), pass%result(i), force, tangent)
-         if (touching .and. pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
-             pass%result(i)%gap <= parameters%gap_tolerance) &
-            tangent = tangent + mortar_touching_stiffness(node, parameters%normal%stiffness(), tangential_penalty)
-         do k = 1, n
-            fint(3*node%nodes(k) - 2:3*node%nodes(k)) = fint(3*node%nodes(k) - 2:3*node%nodes(k)) + force(3*k - 2:3*k)
-         end do
-         ! an open node's zero block is not added (its node pairs may lie outside the pattern)
-         if (present(matrix) .and. any(tangent /= 0.0_dp)) call matrix%add_element(node%nodes, tangent)
-         deallocate (force, tangent)
+         if (3*n > size(force)) then
+            deallocate (force, tangent)
+            allocate (force(3*n), tangent(3*n, 3*n))
+         end if
+         associate (node_force => force(:3*n), node_tangent => tangent(:3*n, :3*n))
+            call mortar_node_contact(parameters, node, friction_scale, pass%branch(i), pass%result(i), node_force, &
+                                     node_tangent)
+            if (touching .and. pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
+                pass%result(i)%gap <= parameters%gap_tolerance) &
+               node_tangent = node_tangent + mortar_touching_stiffness(node, parameters%normal%stiffness(), &
+                                                                       tangential_penalty)
+            do k = 1, n
+               fint(3*node%nodes(k) - 2:3*node%nodes(k)) = fint(3*node%nodes(k) - 2:3*node%nodes(k)) + &
+                                                           node_force(3*k - 2:3*k)
+            end do
+            ! an open node's zero block is not added (its node pairs may lie outside the pattern)
+            if (present(matrix) .and. any(node_tangent /= 0.0_dp)) call matrix%add_element(node%nodes, node_tangent)
+         end associate
       end do
    end subroutine assemble_mortar_pass
 

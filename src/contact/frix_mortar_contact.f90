@@ -187,7 +187,9 @@ contains
       type(mortar_rows_t), intent(in), optional :: committed
       real(dp), intent(in), optional :: committed_traction(3)
       logical, intent(in), optional :: committed_closed   !! with `committed`
-      integer :: k, position
+      integer, allocatable :: nodes(:)
+      real(dp), allocatable :: weight(:), committed_weight(:)
+      integer :: k, n, position
       node%nodes = rows%nodes(rows%start(j) + 1:rows%start(j + 1))
       node%weight = rows%weight(rows%start(j) + 1:rows%start(j + 1))
       node%committed_weight = node%weight
@@ -198,17 +200,26 @@ contains
       if (.not. present(committed)) return
       node%committed_traction = committed_traction
       if (.not. (committed_closed .and. mortar_covered(committed, j))) return
-      node%committed_weight = 0.0_dp
+      ! the union of the two rows, current row first (joined once, not grown per entry)
+      n = size(node%nodes)
+      allocate (nodes(n + committed%start(j + 1) - committed%start(j)))
+      allocate (weight(size(nodes)), committed_weight(size(nodes)))
+      nodes(:n) = node%nodes
+      weight(:n) = node%weight
+      committed_weight = 0.0_dp
       do k = committed%start(j) + 1, committed%start(j + 1)
-         position = findloc(node%nodes, committed%nodes(k), dim=1)
+         position = findloc(nodes(:n), committed%nodes(k), dim=1)
          if (position == 0) then
-            node%nodes = [node%nodes, committed%nodes(k)]
-            node%weight = [node%weight, 0.0_dp]
-            node%committed_weight = [node%committed_weight, committed%weight(k)]
-         else
-            node%committed_weight(position) = committed%weight(k)
+            n = n + 1
+            nodes(n) = committed%nodes(k)
+            weight(n) = 0.0_dp
+            position = n
          end if
+         committed_weight(position) = committed%weight(k)
       end do
+      node%nodes = nodes(:n)
+      node%weight = weight(:n)
+      node%committed_weight = committed_weight(:n)
    end subroutine mortar_node
 
    !> One slave node: the result (gap g_j / D_j; pressure p_j D_j / A_j, the node's normal
