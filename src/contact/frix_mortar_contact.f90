@@ -73,13 +73,16 @@ module frix_mortar_contact
    !> committed row (mesh numbers), their current positions (3, n; the caller's), the current
    !> and committed coefficients on them (0 where a node is not in that row), D_j (area), the
    !> tributary areas A_j (reference, the results' divisor) and a_j (current, the coverage's),
-   !> n_j and the committed traction t^n (force/area).
+   !> n_j and the committed traction t^n (force/area); `fresh`: the node starts from its current
+   !> row (not in contact at the last converged increment), so it has no slip increment and no
+   !> friction in this increment.
    type :: mortar_node_t
       integer, allocatable :: nodes(:)
       real(dp), allocatable :: x(:, :)
       real(dp), allocatable :: weight(:), committed_weight(:)
       real(dp) :: dual_area = 0.0_dp, area = 0.0_dp, tributary_area = 0.0_dp
       real(dp) :: normal(3) = 0.0_dp, committed_traction(3) = 0.0_dp
+      logical :: fresh = .true.
    end type mortar_node_t
 
 contains
@@ -200,6 +203,7 @@ contains
       if (.not. present(committed)) return
       node%committed_traction = committed_traction
       if (.not. (committed_closed .and. mortar_covered(committed, j))) return
+      node%fresh = .false.
       ! the union of the two rows, current row first (joined once, not grown per entry)
       n = size(node%nodes)
       allocate (nodes(n + committed%start(j + 1) - committed%start(j)))
@@ -258,7 +262,13 @@ contains
          traction = 0.0_dp
          d_traction = 0.0_dp
          d_pressure = 0.0_dp
-         if (.not. parameters%friction%frictionless()) then
+         ! a fresh node: slip 0 and t^n = 0 give t = 0 in stick, its derivatives 0 (the row it
+         ! starts from moves with it)
+         if (node%fresh .and. .not. parameters%friction%frictionless()) then
+            result%status = contact_stick
+            result%law_status = contact_stick
+         end if
+         if (.not. (parameters%friction%frictionless() .or. node%fresh)) then
             slip_area = matmul(node%x, node%committed_weight - c)
             call friction_return(parameters, node, slip_area, pressure%value, friction_scale, branch, result, &
                                  traction, d_traction, d_pressure)
@@ -267,7 +277,7 @@ contains
             fint(3*k - 2:3*k) = -c(k)*(pressure%value*n + traction)
          end do
          tangent = mortar_row_stiffness_of(c, n, -pressure%gradient(1)/dual_area)
-         if (parameters%friction%frictionless()) return
+         if (parameters%friction%frictionless() .or. node%fresh) return
          ! d t / d x_l = d_traction (-eps_T/D_j) P c^n_l + d_pressure (dp_j/dx_l) (P u_j to first
          ! order: header), dp_j / dx_l = p_N'(g) c_l n^T / D_j; K_kl -= c_k d t / d x_l
          do l = 1, size(c)
