@@ -11,7 +11,7 @@ module frix_face_grid
 
    integer, parameter :: max_cells = 200              !! most grid cells along an axis
 
-   !> Uniform bucket grid of the master faces' inflated bounding boxes: the faces whose box
+   !> Uniform bucket grid of the faces' inflated bounding boxes: the faces whose box
    !> meets cell c are cell_faces(cell_start(c) + 1 : cell_start(c + 1)); cells are numbered
    !> x fastest.
    type :: face_grid_t

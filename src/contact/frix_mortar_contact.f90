@@ -48,7 +48,7 @@ module frix_mortar_contact
    private
 
    public :: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, mortar_touching_stiffness
-   public :: least_mortar_coverage, mortar_covered
+   public :: mortar_covered
 
    !> A slave node takes part in the contact when the master covers this fraction of its
    !> current tributary area a_j = int N_j dA over its current slave faces
@@ -122,17 +122,26 @@ contains
       real(dp) :: area(size(slave_nodes))
       integer, allocatable :: position_of(:)
       real(dp) :: weights(4)
-      integer :: f, j
-      allocate (position_of(size(coords, 2)), source=0)
-      do j = 1, size(slave_nodes)
-         position_of(slave_nodes(j)) = j
-      end do
+      integer :: f
+      position_of = slave_positions(size(coords, 2), slave_nodes)
       area = 0.0_dp
       do f = 1, size(slave_faces, 2)
          call face_area_weights(coords(:, slave_faces(:, f)), weights)
          area(position_of(slave_faces(:, f))) = area(position_of(slave_faces(:, f))) + weights
       end do
    end function tributary_areas
+
+   !> position_of(node) = the node's place in slave_nodes, 0 for a node not in it (n_nodes
+   !> mesh nodes).
+   pure function slave_positions(n_nodes, slave_nodes) result(position_of)
+      integer, intent(in) :: n_nodes, slave_nodes(:)
+      integer :: position_of(n_nodes)
+      integer :: j
+      position_of = 0
+      do j = 1, size(slave_nodes)
+         position_of(slave_nodes(j)) = j
+      end do
+   end function slave_positions
 
    !> Whether slave node j of `rows` takes part: D_j >= least_mortar_coverage a_j (false for
    !> a NaN, and for a node with no area).
@@ -159,10 +168,7 @@ contains
       integer, allocatable :: position_of(:)
       integer :: f, a, j
       real(dp) :: length
-      allocate (position_of(size(coords, 2)), source=0)
-      do j = 1, size(slave_nodes)
-         position_of(slave_nodes(j)) = j
-      end do
+      position_of = slave_positions(size(coords, 2), slave_nodes)
       normal = 0.0_dp
       do f = 1, size(slave_faces, 2)
          do a = 1, 4
