@@ -14,7 +14,7 @@ module frix_mortar_assembly
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_open
    use frix_mortar_contact, only: mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, &
-                                  mortar_touching_stiffness, least_mortar_coverage
+                                  mortar_touching_stiffness, mortar_covered
    implicit none
    private
 
@@ -23,8 +23,8 @@ module frix_mortar_assembly
 contains
 
    !> The mortar rows of `pass` at displacements u (current configuration), pass%face(i) a
-   !> master face overlapping slave i's faces (0: none, or less than least_mortar_coverage of
-   !> the node's area covered), and the node pairs (2, n_missing) of
+   !> master face overlapping slave i's faces (0: none, or the node not covered enough:
+   !> mortar_covered), and the node pairs (2, n_missing) of
    !> the covered slave nodes' rows (with friction joined with their committed rows) that
    !> `matrix`'s pattern lacks.
    subroutine search_mortar_pass(model, pass, frictional, u, matrix, missing, n_missing)
@@ -40,13 +40,13 @@ contains
       call mortar_rows(current_coordinates(model, u), pass%slave_nodes, pass%slave_faces, pass%faces, pass%band, &
                        pass%mortar_rows)
       pass%face = pass%mortar_rows%master_face
-      ! a node whose faces the master covers less than least_mortar_coverage is open: no face
-      ! (its results are not written, as for a node-to-segment node without a face)
-      where (.not. pass%mortar_rows%dual_area >= least_mortar_coverage*pass%area) pass%face = 0
       allocate (missing(2, 64))
       n_missing = 0
       do i = 1, size(pass%slave_nodes)
-         if (.not. pass%mortar_rows%dual_area(i) >= least_mortar_coverage*pass%area(i)) cycle
+         ! a node the master does not cover enough is open: no face (its results are not
+         ! written, as for a node-to-segment node without a face)
+         if (.not. mortar_covered(pass%mortar_rows, i)) pass%face(i) = 0
+         if (pass%face(i) == 0) cycle
          call slave_node(pass, frictional, i, node)
          do a = 1, size(node%nodes)
             do b = a + 1, size(node%nodes)
@@ -77,6 +77,8 @@ contains
       integer :: i, k, n
       tangential_penalty = 0.0_dp
       if (.not. parameters%friction%frictionless()) tangential_penalty = parameters%tangential_penalty
+      ! room for a row's force and tangent, grown (not allocated per node) as longer rows come
+      allocate (force(0), tangent(0, 0))
       do i = 1, size(pass%slave_nodes)
          if (pass%face(i) == 0) then
             pass%result(i) = contact_point_result_t()
@@ -89,22 +91,30 @@ contains
          do k = 1, n
             node%x(:, k) = model%mesh%coords(:, node%nodes(k)) + u(3*node%nodes(k) - 2:3*node%nodes(k))
          end do
-         allocate (force(3*n), tangent(3*n, 3*n))
-         call mortar_node_contact(parameters, node, friction_scale, pass%branch(i), pass%result(i), force, tangent)
-         if (touching .and. pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
-             pass%result(i)%gap <= parameters%gap_tolerance) &
-            tangent = tangent + mortar_touching_stiffness(node, parameters%normal%stiffness(), tangential_penalty)
-         do k = 1, n
-            fint(3*node%nodes(k) - 2:3*node%nodes(k)) = fint(3*node%nodes(k) - 2:3*node%nodes(k)) + force(3*k - 2:3*k)
-         end do
-         ! an open node's zero block is not added (its node pairs may lie outside the pattern)
-         if (present(matrix) .and. any(tangent /= 0.0_dp)) call matrix%add_element(node%nodes, tangent)
-         deallocate (force, tangent)
+         if (3*n > size(force)) then
+            deallocate (force, tangent)
+            allocate (force(3*n), tangent(3*n, 3*n))
+         end if
+         associate (node_force => force(:3*n), node_tangent => tangent(:3*n, :3*n))
+            call mortar_node_contact(parameters, node, friction_scale, pass%branch(i), pass%result(i), node_force, &
+                                     node_tangent)
+            if (touching .and. pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
+                pass%result(i)%gap <= parameters%gap_tolerance) &
+               node_tangent = node_tangent + mortar_touching_stiffness(node, parameters%normal%stiffness(), &
+                                                                       tangential_penalty)
+            do k = 1, n
+               fint(3*node%nodes(k) - 2:3*node%nodes(k)) = fint(3*node%nodes(k) - 2:3*node%nodes(k)) + &
+                                                           node_force(3*k - 2:3*k)
+            end do
+            ! an open node's zero block is not added (its node pairs may lie outside the pattern)
+            if (present(matrix) .and. any(node_tangent /= 0.0_dp)) call matrix%add_element(node%nodes, node_tangent)
+         end associate
       end do
    end subroutine assemble_mortar_pass
 
    !> Slave node i of `pass` as frix_mortar_contact evaluates it (positions not set); with
-   !> friction joined with its committed row and traction.
+   !> friction joined with its committed row and traction where it was closed at the last
+   !> converged increment (pass%has_anchor).
    subroutine slave_node(pass, frictional, i, node)
       type(contact_pass_t), intent(in) :: pass
       logical, intent(in) :: frictional
@@ -112,16 +122,17 @@ contains
       type(mortar_node_t), intent(out) :: node
       if (frictional) then
          call mortar_node(pass%mortar_rows, i, pass%area(i), node, pass%committed_mortar_rows, &
-                          pass%committed_mortar_traction(:, i))
+                          pass%committed_mortar_traction(:, i), pass%has_anchor(i))
       else
          call mortar_node(pass%mortar_rows, i, pass%area(i), node)
       end if
    end subroutine slave_node
 
    !> A converged increment at displacements u: the rows there (computed again, as a restart
-   !> computes them, restart_mortar_pass, so that a restarted run continues exactly) and each
+   !> computes them, restart_mortar_pass, so that a restarted run continues exactly), each
    !> node's traction t_j (per current area: the written traction times A_j / D_j; 0 where
-   !> open) become the committed ones, and the plastic slip is accumulated.
+   !> open) and whether it is closed (pass%has_anchor, kept in the restart history) become the
+   !> committed ones, and the plastic slip is accumulated.
    subroutine commit_mortar_pass(model, pass, u)
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
@@ -130,7 +141,8 @@ contains
       call restart_mortar_pass(model, pass, u, .true.)
       do i = 1, size(pass%slave_nodes)
          pass%committed_mortar_traction(:, i) = 0.0_dp
-         if (pass%result(i)%status == contact_open) cycle
+         pass%has_anchor(i) = pass%result(i)%status /= contact_open
+         if (.not. pass%has_anchor(i)) cycle
          pass%committed_mortar_traction(:, i) = pass%result(i)%traction*pass%area(i)/pass%mortar_rows%dual_area(i)
          pass%slip(i) = pass%slip(i) + pass%result(i)%slip_increment
       end do
@@ -138,17 +150,21 @@ contains
 
    !> The committed rows of a mortar pass at the committed displacements u (set-up: u = 0; a
    !> restart: the displacements read back), the tractions zero unless kept (`keep_traction`,
-   !> restored from the restart history).
+   !> restored from the restart history with pass%has_anchor); at the set-up a node the master
+   !> covers counts as closed (pass%has_anchor), so that friction acts from the first increment
+   !> on bodies touching at the start, as node-to-segment's initial anchors.
    subroutine restart_mortar_pass(model, pass, u, keep_traction)
       type(model_t), intent(in) :: model
       type(contact_pass_t), intent(inout) :: pass
       real(dp), intent(in) :: u(:)
       logical, intent(in) :: keep_traction
+      integer :: i
       call mortar_rows(current_coordinates(model, u), pass%slave_nodes, pass%slave_faces, pass%faces, pass%band, &
                        pass%committed_mortar_rows)
       if (.not. keep_traction .or. .not. allocated(pass%committed_mortar_traction)) then
          if (allocated(pass%committed_mortar_traction)) deallocate (pass%committed_mortar_traction)
          allocate (pass%committed_mortar_traction(3, size(pass%slave_nodes)), source=0.0_dp)
+         pass%has_anchor = [(mortar_covered(pass%committed_mortar_rows, i), i=1, size(pass%slave_nodes))]
       end if
    end subroutine restart_mortar_pass
 

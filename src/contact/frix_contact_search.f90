@@ -26,6 +26,7 @@ module frix_contact_search
    use frix_contact_patches, only: ring_nodes_of, patch_faces_of
    use frix_contact_pass, only: contact_pass_t
    use frix_free_edge_zone, only: extension_zone, edge_nodes, clamped_on_edge
+   use frix_face_grid, only: face_grid_t, build_face_grid, grid_cell
    implicit none
    private
 
@@ -45,18 +46,6 @@ module frix_contact_search
    !> nearest-face rule: there the choice decides the force's direction.
    real(dp), parameter :: face_hysteresis = 1.0e-3_dp
    real(dp), parameter :: coplanar_angle = 1.0e-2_dp   !! rad
-   integer, parameter :: max_cells = 200              !! most grid cells along an axis
-
-   !> Uniform bucket grid of the master faces' inflated bounding boxes: the faces whose box
-   !> meets cell c are cell_faces(cell_start(c) + 1 : cell_start(c + 1)); cells are numbered
-   !> x fastest.
-   type :: face_grid_t
-      real(dp), allocatable :: lower(:, :), upper(:, :)  !! (3, n_faces) box corners
-      real(dp) :: origin(3) = 0.0_dp
-      real(dp) :: cell_size = 0.0_dp
-      integer :: n_cells(3) = 1
-      integer, allocatable :: cell_start(:), cell_faces(:)
-   end type face_grid_t
 
    !> A candidate face of a slave node: its facet distance (to the bounded face's closest point)
    !> and, once projected along the smoothed normals, whether that projection qualifies
@@ -332,81 +321,6 @@ contains
       gap = dot_product(offset, smooth_normal_at(nodal, xi))
    end subroutine smooth_candidate
 
-   !> The bucket grid of faces x_faces (3, 4, n >= 1), boxes inflated by band: cells about the
-   !> size of the largest box, at most max_cells along an axis.
-   subroutine build_face_grid(x_faces, band, grid)
-      real(dp), intent(in) :: x_faces(:, :, :), band
-      type(face_grid_t), intent(out) :: grid
-      integer, allocatable :: counts(:)
-      integer :: f, c, n_faces
-      n_faces = size(x_faces, 3)
-      allocate (grid%lower(3, n_faces), grid%upper(3, n_faces))
-      do f = 1, n_faces
-         grid%lower(:, f) = minval(x_faces(:, :, f), dim=2) - band
-         grid%upper(:, f) = maxval(x_faces(:, :, f), dim=2) + band
-      end do
-      grid%origin = minval(grid%lower, dim=2)
-      grid%cell_size = max(maxval(grid%upper - grid%lower), maxval(maxval(grid%upper, dim=2) - grid%origin)/max_cells, &
-                           tiny(1.0_dp))
-      grid%n_cells = max(1, min(ceiling((maxval(grid%upper, dim=2) - grid%origin)/grid%cell_size), max_cells))
-      ! faces per cell as compressed rows: count, prefix sums, fill
-      allocate (counts(product(grid%n_cells)), source=0)
-      do f = 1, n_faces
-         call visit_cells(grid, f, counts, .false.)
-      end do
-      allocate (grid%cell_start(product(grid%n_cells) + 1))
-      grid%cell_start(1) = 0
-      do c = 1, product(grid%n_cells)
-         grid%cell_start(c + 1) = grid%cell_start(c) + counts(c)
-      end do
-      allocate (grid%cell_faces(grid%cell_start(product(grid%n_cells) + 1)))
-      counts = grid%cell_start(:product(grid%n_cells))
-      do f = 1, n_faces
-         call visit_cells(grid, f, counts, .true.)
-      end do
-   end subroutine build_face_grid
-
-   !> Count face f in every cell its box covers, or (fill) also store it there.
-   pure subroutine visit_cells(grid, f, counts, fill)
-      type(face_grid_t), intent(inout) :: grid
-      integer, intent(in) :: f
-      integer, intent(inout) :: counts(:)
-      logical, intent(in) :: fill
-      integer :: lo(3), hi(3), ix, iy, iz, c
-      lo = cell_of(grid, grid%lower(:, f))
-      hi = cell_of(grid, grid%upper(:, f))
-      do iz = lo(3), hi(3)
-         do iy = lo(2), hi(2)
-            do ix = lo(1), hi(1)
-               c = ix + grid%n_cells(1)*((iy - 1) + grid%n_cells(2)*(iz - 1))
-               counts(c) = counts(c) + 1
-               if (fill) grid%cell_faces(counts(c)) = f
-            end do
-         end do
-      end do
-   end subroutine visit_cells
-
-   !> The cell (x, y, z indices) of a point, clamped to the grid.
-   pure function cell_of(grid, point) result(index3)
-      type(face_grid_t), intent(in) :: grid
-      real(dp), intent(in) :: point(3)
-      integer :: index3(3)
-      real(dp) :: position(3)
-      ! clamped before the conversion, which is undefined for reals beyond the integers
-      position = min(real(grid%n_cells, dp), max(1.0_dp, (point - grid%origin)/grid%cell_size + 1.0_dp))
-      index3 = int(position)
-   end function cell_of
-
-   !> The number of the cell that holds a point, 0 if the point lies outside the grid.
-   pure integer function grid_cell(grid, point) result(c)
-      type(face_grid_t), intent(in) :: grid
-      real(dp), intent(in) :: point(3)
-      integer :: cell(3)
-      c = 0
-      if (.not. (all(point >= grid%origin) .and. all(point <= grid%origin + grid%n_cells*grid%cell_size))) return
-      cell = cell_of(grid, point)
-      c = cell(1) + grid%n_cells(1)*((cell(2) - 1) + grid%n_cells(2)*(cell(3) - 1))
-   end function grid_cell
 
    !> Anchors of the reference configuration of a deformable pass: every slave node starts
    !> with the closest point of its reference position on the nearest master face within the

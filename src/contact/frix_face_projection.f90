@@ -42,15 +42,22 @@ contains
       x = matmul(x_face, shape)
    end function face_position
 
-   !> Unit normal (x_,1 x x_,2)/|x_,1 x x_,2| at xi (outward for the HEX8 face order).
+   !> Unit normal (x_,1 x x_,2)/|x_,1 x x_,2| at xi (outward for the HEX8 face order); the zero
+   !> vector where x_,1 x x_,2 = 0 (a collapsed face, or a corner where two nodes coincide), so
+   !> that no NaN (0/0) is passed on: callers treat a zero normal as no contribution.
    pure function face_normal(x_face, xi) result(normal)
       real(dp), intent(in) :: x_face(3, 4)
       real(dp), intent(in) :: xi(2)
       real(dp) :: normal(3)
-      real(dp) :: shape(4), d_xi(4), d_eta(4)
+      real(dp) :: shape(4), d_xi(4), d_eta(4), length
       call face_shape_functions(xi, shape, d_xi, d_eta)
       normal = cross_product(matmul(x_face, d_xi), matmul(x_face, d_eta))
-      normal = normal/norm2(normal)
+      length = norm2(normal)
+      if (length > 0.0_dp) then
+         normal = normal/length
+      else
+         normal = 0.0_dp
+      end if
    end function face_normal
 
    !> True if xi lies in [-1 - tolerance, 1 + tolerance]^2.

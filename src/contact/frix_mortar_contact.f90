@@ -39,6 +39,7 @@
 module frix_mortar_contact
    use frix_kinds, only: dp
    use frix_face_projection, only: face_normal, face_node_xi, face_node_eta
+   use frix_surface_load, only: face_area_weights
    use frix_dual_number, only: dual_t, dual_variable
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_stick, contact_slip
@@ -47,19 +48,23 @@ module frix_mortar_contact
    private
 
    public :: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, mortar_touching_stiffness
-   public :: least_mortar_coverage
+   public :: mortar_covered
 
    !> A slave node takes part in the contact when the master covers this fraction of its
-   !> tributary area A_j (D_j >= least_mortar_coverage A_j), as a tied node (frix_tie_pass).
+   !> current tributary area a_j = int N_j dA over its current slave faces
+   !> (D_j >= least_mortar_coverage a_j, both in the current configuration, so that a slave
+   !> surface stretched or shrunk in its plane keeps its covered nodes), as a tied node
+   !> (frix_tie_pass, where both are in the reference configuration).
    real(dp), parameter :: least_mortar_coverage = 0.5_dp
 
    !> The mortar rows of a pass's slave nodes: row j's nodes nodes(start(j) + 1 : start(j + 1))
-   !> (mesh numbers, slave and master) with coefficients c_jk (area), D_j (area), the normal
-   !> n_j (unit, out of the master body) and a master face overlapping node j's faces (0: none).
+   !> (mesh numbers, slave and master) with coefficients c_jk (area), D_j (area), the current
+   !> tributary area a_j (area), the normal n_j (unit, out of the master body) and a master
+   !> face overlapping node j's faces (0: none).
    type :: mortar_rows_t
       integer, allocatable :: start(:), nodes(:)
       real(dp), allocatable :: weight(:)
-      real(dp), allocatable :: dual_area(:)
+      real(dp), allocatable :: dual_area(:), tributary_area(:)
       real(dp), allocatable :: normal(:, :)
       integer, allocatable :: master_face(:)
    end type mortar_rows_t
@@ -67,13 +72,17 @@ module frix_mortar_contact
    !> One slave node's evaluation: the nodes of its current row and, with friction, of its
    !> committed row (mesh numbers), their current positions (3, n; the caller's), the current
    !> and committed coefficients on them (0 where a node is not in that row), D_j (area), the
-   !> tributary area A_j (reference), n_j and the committed traction t^n (force/area).
+   !> tributary areas A_j (reference, the results' divisor) and a_j (current, the coverage's),
+   !> n_j and the committed traction t^n (force/area); `fresh`: the node starts from its current
+   !> row (not in contact at the last converged increment), so it has no slip increment and no
+   !> friction in this increment.
    type :: mortar_node_t
       integer, allocatable :: nodes(:)
       real(dp), allocatable :: x(:, :)
       real(dp), allocatable :: weight(:), committed_weight(:)
-      real(dp) :: dual_area = 0.0_dp, area = 0.0_dp
+      real(dp) :: dual_area = 0.0_dp, area = 0.0_dp, tributary_area = 0.0_dp
       real(dp) :: normal(3) = 0.0_dp, committed_traction(3) = 0.0_dp
+      logical :: fresh = .true.
    end type mortar_node_t
 
 contains
@@ -102,10 +111,56 @@ contains
       call compress_rows(m, n_slave, rows%start, rows%nodes, rows%weight, drop=0.0_dp)
       rows%weight = -rows%weight
       rows%normal = slave_nodal_normals(coords, slave_nodes, slave_faces)
+      rows%tributary_area = tributary_areas(coords, slave_nodes, slave_faces)
    end subroutine mortar_rows
 
+   !> a_j = int N_j dA over the slave faces at node j at the coordinates `coords` (area;
+   !> face_area_weights, as the reference A_j of frix_contact_pass).
+   function tributary_areas(coords, slave_nodes, slave_faces) result(area)
+      real(dp), intent(in) :: coords(:, :)
+      integer, intent(in) :: slave_nodes(:), slave_faces(:, :)
+      real(dp) :: area(size(slave_nodes))
+      integer, allocatable :: position_of(:)
+      real(dp) :: weights(4)
+      integer :: f
+      position_of = slave_positions(size(coords, 2), slave_nodes)
+      area = 0.0_dp
+      do f = 1, size(slave_faces, 2)
+         call face_area_weights(coords(:, slave_faces(:, f)), weights)
+         area(position_of(slave_faces(:, f))) = area(position_of(slave_faces(:, f))) + weights
+      end do
+   end function tributary_areas
+
+   !> position_of(node) = the node's place in slave_nodes, 0 for a node not in it (n_nodes
+   !> mesh nodes).
+   pure function slave_positions(n_nodes, slave_nodes) result(position_of)
+      integer, intent(in) :: n_nodes, slave_nodes(:)
+      integer :: position_of(n_nodes)
+      integer :: j
+      position_of = 0
+      do j = 1, size(slave_nodes)
+         position_of(slave_nodes(j)) = j
+      end do
+   end function slave_positions
+
+   !> Whether slave node j of `rows` takes part: D_j >= least_mortar_coverage a_j (false for
+   !> a NaN, and for a node with no area).
+   pure logical function mortar_covered(rows, j)
+      type(mortar_rows_t), intent(in) :: rows
+      integer, intent(in) :: j
+      mortar_covered = covers(rows%dual_area(j), rows%tributary_area(j))
+   end function mortar_covered
+
+   !> D_j >= least_mortar_coverage a_j and D_j > 0 (both area).
+   pure logical function covers(dual_area, tributary_area)
+      real(dp), intent(in) :: dual_area, tributary_area
+      covers = dual_area >= least_mortar_coverage*tributary_area .and. dual_area > 0.0_dp
+   end function covers
+
    !> n_j: minus the normalised sum of the unit outward normals of the slave faces at node j
-   !> (at the node's corner of each face), i.e. out of the master body.
+   !> (at the node's corner of each face), i.e. out of the master body. A face with no normal at
+   !> the node's corner (zero area, or a node coinciding with a neighbour: face_normal gives the
+   !> zero vector) adds nothing; a node with no normal at all keeps n_j = 0.
    function slave_nodal_normals(coords, slave_nodes, slave_faces) result(normal)
       real(dp), intent(in) :: coords(:, :)
       integer, intent(in) :: slave_nodes(:), slave_faces(:, :)
@@ -113,10 +168,7 @@ contains
       integer, allocatable :: position_of(:)
       integer :: f, a, j
       real(dp) :: length
-      allocate (position_of(size(coords, 2)), source=0)
-      do j = 1, size(slave_nodes)
-         position_of(slave_nodes(j)) = j
-      end do
+      position_of = slave_positions(size(coords, 2), slave_nodes)
       normal = 0.0_dp
       do f = 1, size(slave_faces, 2)
          do a = 1, 4
@@ -130,38 +182,54 @@ contains
       end do
    end function slave_nodal_normals
 
-   !> Slave node j of `rows` (tributary area `area`) as mortar_node_contact takes it, without
-   !> positions; with `committed` (friction) also the committed row and traction. A node not
-   !> covered at the last converged increment (D^n_j < least_mortar_coverage A_j) starts from
-   !> the current row: no slip increment.
-   subroutine mortar_node(rows, j, area, node, committed, committed_traction)
+   !> Slave node j of `rows` (reference tributary area `area`) as mortar_node_contact takes it,
+   !> without positions; with `committed` (friction) also the committed row and traction. A
+   !> node not in contact at the last converged increment (`committed_closed` false: open
+   !> there, or not covered at the set-up) or not covered then (mortar_covered) starts from the
+   !> current row: no slip increment, so that its motion before it touches is not taken as slip
+   !> (as a node-to-segment node that closes starts from its closest point).
+   subroutine mortar_node(rows, j, area, node, committed, committed_traction, committed_closed)
       type(mortar_rows_t), intent(in) :: rows
       integer, intent(in) :: j
       real(dp), intent(in) :: area
       type(mortar_node_t), intent(out) :: node
       type(mortar_rows_t), intent(in), optional :: committed
       real(dp), intent(in), optional :: committed_traction(3)
-      integer :: k, position
+      logical, intent(in), optional :: committed_closed   !! with `committed`
+      integer, allocatable :: nodes(:)
+      real(dp), allocatable :: weight(:), committed_weight(:)
+      integer :: k, n, position
       node%nodes = rows%nodes(rows%start(j) + 1:rows%start(j + 1))
       node%weight = rows%weight(rows%start(j) + 1:rows%start(j + 1))
       node%committed_weight = node%weight
       node%dual_area = rows%dual_area(j)
       node%area = area
+      node%tributary_area = rows%tributary_area(j)
       node%normal = rows%normal(:, j)
       if (.not. present(committed)) return
       node%committed_traction = committed_traction
-      if (.not. committed%dual_area(j) >= least_mortar_coverage*area) return
-      node%committed_weight = 0.0_dp
+      if (.not. (committed_closed .and. mortar_covered(committed, j))) return
+      node%fresh = .false.
+      ! the union of the two rows, current row first (joined once, not grown per entry)
+      n = size(node%nodes)
+      allocate (nodes(n + committed%start(j + 1) - committed%start(j)))
+      allocate (weight(size(nodes)), committed_weight(size(nodes)))
+      nodes(:n) = node%nodes
+      weight(:n) = node%weight
+      committed_weight = 0.0_dp
       do k = committed%start(j) + 1, committed%start(j + 1)
-         position = findloc(node%nodes, committed%nodes(k), dim=1)
+         position = findloc(nodes(:n), committed%nodes(k), dim=1)
          if (position == 0) then
-            node%nodes = [node%nodes, committed%nodes(k)]
-            node%weight = [node%weight, 0.0_dp]
-            node%committed_weight = [node%committed_weight, committed%weight(k)]
-         else
-            node%committed_weight(position) = committed%weight(k)
+            n = n + 1
+            nodes(n) = committed%nodes(k)
+            weight(n) = 0.0_dp
+            position = n
          end if
+         committed_weight(position) = committed%weight(k)
       end do
+      node%nodes = nodes(:n)
+      node%weight = weight(:n)
+      node%committed_weight = committed_weight(:n)
    end subroutine mortar_node
 
    !> One slave node: the result (gap g_j / D_j; pressure p_j D_j / A_j, the node's normal
@@ -169,7 +237,7 @@ contains
    !> p_j is per current area; the traction t_j the same way; normal n_j; status; the plastic
    !> slip (|t_trial| - |t|) / eps_T of the increment), the internal force fint = -(forces on
    !> the nodes) (3 per node of `node`, node-major) and its tangent with the mortar
-   !> coefficients and n_j fixed (force/length). A node with D_j < least_mortar_coverage A_j is
+   !> coefficients and n_j fixed (force/length). A node with D_j < least_mortar_coverage a_j is
    !> open with gap huge; a node the law does not make active is open with its gap.
    !> friction_scale multiplies the pressure the friction law sees (friction continuation);
    !> branch: the friction branch (frix_friction_law).
@@ -188,7 +256,7 @@ contains
       tangent = 0.0_dp
       result%normal = node%normal
       result%gap = huge(1.0_dp)
-      if (.not. node%dual_area >= least_mortar_coverage*node%area) return
+      if (.not. covers(node%dual_area, node%tributary_area)) return
       associate (c => node%weight, n => node%normal, dual_area => node%dual_area)
          result%gap = dot_product(n, matmul(node%x, c))/dual_area
          if (.not. parameters%normal%active(result%gap, 0.0_dp)) return
@@ -200,7 +268,13 @@ contains
          traction = 0.0_dp
          d_traction = 0.0_dp
          d_pressure = 0.0_dp
-         if (.not. parameters%friction%frictionless()) then
+         ! a fresh node: slip 0 and t^n = 0 give t = 0 in stick, its derivatives 0 (the row it
+         ! starts from moves with it)
+         if (node%fresh .and. .not. parameters%friction%frictionless()) then
+            result%status = contact_stick
+            result%law_status = contact_stick
+         end if
+         if (.not. (parameters%friction%frictionless() .or. node%fresh)) then
             slip_area = matmul(node%x, node%committed_weight - c)
             call friction_return(parameters, node, slip_area, pressure%value, friction_scale, branch, result, &
                                  traction, d_traction, d_pressure)
@@ -209,7 +283,7 @@ contains
             fint(3*k - 2:3*k) = -c(k)*(pressure%value*n + traction)
          end do
          tangent = mortar_row_stiffness_of(c, n, -pressure%gradient(1)/dual_area)
-         if (parameters%friction%frictionless()) return
+         if (parameters%friction%frictionless() .or. node%fresh) return
          ! d t / d x_l = d_traction (-eps_T/D_j) P c^n_l + d_pressure (dp_j/dx_l) (P u_j to first
          ! order: header), dp_j / dx_l = p_N'(g) c_l n^T / D_j; K_kl -= c_k d t / d x_l
          do l = 1, size(c)

@@ -25,6 +25,7 @@ module frix_mortar_segments
    use frix_vector_algebra, only: cross_product
    use frix_face_projection, only: face_position, face_normal, face_shape_functions, project_onto_face
    use frix_dense_algebra, only: solve_in_place
+   use frix_face_grid, only: face_grid_t, build_face_grid, faces_meeting_box
    implicit none
    private
 
@@ -62,7 +63,9 @@ contains
    !> slave face when their bounding boxes, widened by `distance`, meet, its centre lies
    !> within `distance` of the slave face's plane and it faces the other way (segment_integrals).
    !> master_face(j), if present: a master face (column of master_faces) overlapping a slave
-   !> face of node j, 0 where none does. Cost: every slave face against every master face's box.
+   !> face of node j, 0 where none does. The master faces whose box meets a slave face's come
+   !> from a bucket grid of the boxes (frix_face_grid), in increasing order as a loop over all
+   !> of them would visit them: cost linear in the faces for surfaces of similar face sizes.
    subroutine mortar_triplets(coords, slave_nodes, slave_faces, master_faces, distance, m, d, master_face)
       real(dp), intent(in) :: coords(:, :)
       integer, intent(in) :: slave_nodes(:), slave_faces(:, :), master_faces(:, :)
@@ -70,29 +73,28 @@ contains
       type(triplets_t), intent(out) :: m
       type(triplets_t), intent(out), optional :: d
       integer, intent(out), optional :: master_face(:)
-      real(dp), allocatable :: lower(:, :), upper(:, :)
-      integer, allocatable :: position_of(:)
-      real(dp) :: slave_lower(3), slave_upper(3), master_part(4, 4), slave_part(4, 4)
-      integer :: f, g, j, a, rows(4)
+      type(face_grid_t) :: grid
+      integer, allocatable :: position_of(:), visited(:), near(:)
+      real(dp) :: master_part(4, 4), slave_part(4, 4)
+      integer :: f, g, i, j, a, rows(4), n_near
       logical :: overlap
       allocate (position_of(size(coords, 2)), source=0)
       do j = 1, size(slave_nodes)
          position_of(slave_nodes(j)) = j
       end do
-      allocate (lower(3, size(master_faces, 2)), upper(3, size(master_faces, 2)))
-      do g = 1, size(master_faces, 2)
-         lower(:, g) = minval(coords(:, master_faces(:, g)), dim=2) - distance
-         upper(:, g) = maxval(coords(:, master_faces(:, g)), dim=2) + distance
-      end do
       allocate (m%row(256), m%node(256), m%value(256))
       if (present(d)) allocate (d%row(256), d%node(256), d%value(256))
       if (present(master_face)) master_face = 0
+      if (size(master_faces, 2) == 0) return
+      call build_face_grid(reshape(coords(:, reshape(master_faces, [size(master_faces)])), &
+                                   [3, 4, size(master_faces, 2)]), distance, grid)
+      allocate (visited(size(master_faces, 2)), source=0)
       do f = 1, size(slave_faces, 2)
          rows = position_of(slave_faces(:, f))
-         slave_lower = minval(coords(:, slave_faces(:, f)), dim=2)
-         slave_upper = maxval(coords(:, slave_faces(:, f)), dim=2)
-         do g = 1, size(master_faces, 2)
-            if (any(slave_upper < lower(:, g) .or. slave_lower > upper(:, g))) cycle
+         call faces_meeting_box(grid, minval(coords(:, slave_faces(:, f)), dim=2), &
+                                maxval(coords(:, slave_faces(:, f)), dim=2), f, visited, near, n_near)
+         do i = 1, n_near
+            g = near(i)
             call segment_integrals(coords(:, slave_faces(:, f)), coords(:, master_faces(:, g)), distance, &
                                    master_part, slave_part, overlap)
             if (.not. overlap) cycle
@@ -109,7 +111,8 @@ contains
 
    !> The integrals over the overlap of slave face x_slave and master face x_master:
    !> master_part(j, a) = int phi_j N_a^m dA, slave_part(j, k) = int phi_j N_k^s dA (area).
-   !> overlap = .false. (both zero) when the master face faces the same way as the slave face,
+   !> overlap = .false. (both zero) when either face has zero area (no normal: face_normal),
+   !> the master face faces the same way as the slave face,
    !> its centre lies farther than `distance` from the slave face's plane, or the projections
    !> do not overlap.
    subroutine segment_integrals(x_slave, x_master, distance, master_part, slave_part, overlap)
@@ -126,9 +129,8 @@ contains
       normal = face_normal(x_slave, [0.0_dp, 0.0_dp])
       if (dot_product(face_normal(x_master, [0.0_dp, 0.0_dp]), normal) >= 0.0_dp) return
       if (abs(dot_product(0.25_dp*sum(x_master, dim=2) - centre, normal)) > distance) return
-      e1 = x_slave(:, 2) - x_slave(:, 1)
-      e1 = e1 - dot_product(e1, normal)*normal
-      e1 = e1/norm2(e1)
+      ! a zero-area slave face has a zero normal and was left above (the dot product is 0)
+      if (.not. in_plane_axis(x_slave, normal, e1)) return
       e2 = cross_product(normal, e1)
       do a = 1, 4
          slave_2d(:, a) = [dot_product(x_slave(:, a) - centre, e1), dot_product(x_slave(:, a) - centre, e2)]
@@ -145,6 +147,27 @@ contains
          call add_triangle(polygon(:, [1, t, t + 1]), centre, e1, e2, x_slave, x_master, c, master_part, slave_part)
       end do
    end subroutine segment_integrals
+
+   !> e1: the unit in-plane direction (normal `normal`) of the first edge of x_face whose
+   !> projection onto the plane is not zero (edge 1-2 unless nodes 1 and 2 coincide); .false.
+   !> when every edge projects to zero (a collapsed face).
+   logical function in_plane_axis(x_face, normal, e1) result(found)
+      real(dp), intent(in) :: x_face(3, 4), normal(3)
+      real(dp), intent(out) :: e1(3)
+      real(dp) :: length
+      integer :: a
+      found = .false.
+      do a = 1, 4
+         e1 = x_face(:, mod(a, 4) + 1) - x_face(:, a)
+         e1 = e1 - dot_product(e1, normal)*normal
+         length = norm2(e1)
+         if (length > 0.0_dp) then
+            e1 = e1/length
+            found = .true.
+            return
+         end if
+      end do
+   end function in_plane_axis
 
    !> The dual basis coefficients of a slave face: phi_j = sum_k c(j, k) N_k with
    !> c = D M^-1, M_jk = int N_j N_k dA, D = diag(int N_j dA) (3 x 3 Gauss: exact on a
@@ -273,9 +296,9 @@ contains
       integer, allocatable, intent(out) :: start(:), nodes(:)
       real(dp), allocatable, intent(out) :: values(:)
       real(dp), intent(in), optional :: drop
-      integer, allocatable :: row_start(:), order(:), fill(:), row_nodes(:)
+      integer, allocatable :: row_start(:), order(:), fill(:), row_nodes(:), slot(:)
       real(dp), allocatable :: row_values(:)
-      integer :: k, j, n
+      integer :: k, j, n, n_merged
       real(dp) :: relative_drop
       relative_drop = 1.0e-12_dp
       if (present(drop)) relative_drop = drop
@@ -292,43 +315,57 @@ contains
          fill(m%row(k)) = fill(m%row(k)) + 1
          order(fill(m%row(k))) = k
       end do
-      allocate (start(n_rows + 1), nodes(m%n), values(m%n))
+      allocate (start(n_rows + 1), nodes(m%n), values(m%n), row_nodes(m%n), row_values(m%n))
+      allocate (slot(max(1, maxval(m%node(:m%n)))), source=0)
       start(1) = 0
       do j = 1, n_rows
          call merge_row(m%node(order(row_start(j) + 1:row_start(j + 1))), &
-                        m%value(order(row_start(j) + 1:row_start(j + 1))), relative_drop, row_nodes, row_values)
+                        m%value(order(row_start(j) + 1:row_start(j + 1))), relative_drop, slot, row_nodes, &
+                        row_values, n_merged)
          n = start(j)
-         nodes(n + 1:n + size(row_nodes)) = row_nodes
-         values(n + 1:n + size(row_nodes)) = row_values
-         start(j + 1) = n + size(row_nodes)
+         nodes(n + 1:n + n_merged) = row_nodes(:n_merged)
+         values(n + 1:n + n_merged) = row_values(:n_merged)
+         start(j + 1) = n + n_merged
       end do
       nodes = nodes(:start(n_rows + 1))
       values = values(:start(n_rows + 1))
    end subroutine compress_rows
 
-   !> One row's (node, value) contributions with repeated nodes summed and values not above
-   !> `drop` times the largest dropped.
-   pure subroutine merge_row(row_nodes, row_values, drop, nodes, values)
+   !> One row's (node, value) contributions with repeated nodes summed (in the order of first
+   !> appearance) and values not above `drop` times the largest dropped: nodes(:n), values(:n)
+   !> (room for size(row_nodes)). slot(node): the node's place in this row, 0 for none (all 0 on
+   !> entry and on return; size at least the largest node number).
+   pure subroutine merge_row(row_nodes, row_values, drop, slot, nodes, values, n)
       integer, intent(in) :: row_nodes(:)
       real(dp), intent(in) :: row_values(:)
       real(dp), intent(in) :: drop
-      integer, allocatable, intent(out) :: nodes(:)
-      real(dp), allocatable, intent(out) :: values(:)
-      integer :: k, position
+      integer, intent(inout) :: slot(:)
+      integer, intent(inout) :: nodes(:)
+      real(dp), intent(inout) :: values(:)
+      integer, intent(out) :: n
+      integer :: k, kept
       real(dp) :: largest
-      allocate (nodes(0), values(0))
+      n = 0
       do k = 1, size(row_nodes)
-         position = findloc(nodes, row_nodes(k), dim=1)
-         if (position == 0) then
-            nodes = [nodes, row_nodes(k)]
-            values = [values, row_values(k)]
+         if (slot(row_nodes(k)) == 0) then
+            n = n + 1
+            slot(row_nodes(k)) = n
+            nodes(n) = row_nodes(k)
+            values(n) = row_values(k)
          else
-            values(position) = values(position) + row_values(k)
+            values(slot(row_nodes(k))) = values(slot(row_nodes(k))) + row_values(k)
          end if
       end do
-      if (size(values) == 0) return
-      largest = maxval(abs(values))
-      nodes = pack(nodes, abs(values) > drop*largest)
-      values = pack(values, abs(values) > drop*largest)
+      slot(nodes(:n)) = 0
+      if (n == 0) return
+      largest = maxval(abs(values(:n)))
+      kept = 0
+      do k = 1, n
+         if (.not. abs(values(k)) > drop*largest) cycle
+         kept = kept + 1
+         nodes(kept) = nodes(k)
+         values(kept) = values(k)
+      end do
+      n = kept
    end subroutine merge_row
 end module frix_mortar_segments

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Mortar contact with Coulomb friction, a block pressed and dragged (tests/contact_mortar/drag.dck).
+"""Mortar contact with Coulomb friction, a block pressed and dragged (tests/contact_mortar/drag.dck,
+first_touch.dck).
 
 usage: check_drag.py RUN_BASE --mu MU [--check KEY=LO:HI ...]
 
@@ -19,6 +20,8 @@ Quantities (printed; --check KEY=LO:HI fails when outside):
   slip_ratio_err   max | |F_t| / (mu F_n) - 1 | over those increments
   node_slip_err    max | |t_i| - mu p_i | / p_i over every slipping node of every increment
   lateral          max |F_y| / F_n over all increments
+  touch_ratio      |F_t| / (mu F_n) in the first increment with F_n > 0 after one with every
+                   node open (F_n = 0; such increments are skipped otherwise); nan if none
 """
 import argparse
 import sys
@@ -45,12 +48,19 @@ def main(argv=None):
     first = data[(data["step"] == 1) & (data["increment"] == data["increment"][0])]
     areas = {int(n): area(x, y) for n, x, y in zip(first["node"], first["x"], first["y"])}
     values = {"stick_increments": 0.0, "stick_max_ratio": 0.0, "slip_increments": 0.0, "slip_ratio_err": 0.0,
-              "node_slip_err": 0.0, "lateral": 0.0, "along_drag": -float("inf")}
+              "node_slip_err": 0.0, "lateral": 0.0, "along_drag": -float("inf"), "touch_ratio": float("nan")}
+    was_open = False
     for step, increment in sorted(set(zip(data["step"].astype(int), data["increment"].astype(int)))):
         rows = data[(data["step"] == step) & (data["increment"] == increment)]
         a = np.array([areas[int(n)] for n in rows["node"]])
         f_n = np.sum(rows["pressure"] * a)
         f_t = np.sum(rows["traction_x"] * a)
+        if f_n == 0.0:
+            print(f"step {step} increment {increment:3d}: every node open")
+            was_open = True
+            continue
+        if was_open and np.isnan(values["touch_ratio"]):
+            values["touch_ratio"] = abs(f_t) / (mu * f_n)
         values["lateral"] = max(values["lateral"], abs(np.sum(rows["traction_y"] * a)) / f_n)
         slipping = rows["status"] == 2
         sticking = rows["status"] == 1

@@ -66,6 +66,24 @@ add_test(NAME contact_mortar_drag_coulomb
                  --check lateral=0:1e-8 --check along_drag=-1:0)
 set_tests_properties(contact_mortar_drag_coulomb PROPERTIES LABELS "regression;contact")
 
+# First touch with friction (first_touch.dck, run_drag.sh, check_drag.py): drag.dck's blocks,
+# the upper one 0.001 above the lower one, moved 0.0005 along x while open (step 1), then
+# 0.0005 more while lowered by 0.0011 (step 2: it touches part of the way), then dragged 0.001
+# more in 4 increments. Expected (Coulomb): no slip before the nodes touch, so no tangential
+# traction at the end of step 2 (every node open at the last commit starts from its current
+# row: F_t = 0 exactly, touch_ratio); then slip with F_t = mu F_n against the drag. Measured
+# (2026-11-27): step 2 in 1 increment, every node sticking with F_t = 0 (F_n = 15.10); step 3
+# slipping at every node, |F_t| / (mu F_n) - 1 = 1.2e-9, |t_i| = mu p_i to 1.0e-16, |F_y|
+# 7.9e-14 F_n; 22 Newton iterations. Taking the committed row of the open nodes (and its stick
+# tangent for the nodes that started from their current row), the run stopped in step 2 at
+# t = 1.908 (no convergence after 6 cut-backs). Bounds: touch_ratio exactly 0; the slip
+# relations as for drag.dck.
+add_test(NAME contact_mortar_first_touch
+         COMMAND bash ${MORTAR_DIR}/run_drag.sh ${FRIX_BIN} ${MORTAR_DIR}/first_touch.dck 0.3
+                 --check touch_ratio=0:0 --check slip_increments=4:4 --check slip_ratio_err=0:1e-6
+                 --check node_slip_err=0:1e-12 --check lateral=0:1e-8 --check along_drag=-1:0)
+set_tests_properties(contact_mortar_first_touch PROPERTIES LABELS "regression;contact")
+
 # Restart (drag_restart.dck: drag.dck with HDF5 and TOLRESID/TOLDISP 1e-11): run through, then
 # restarted from increment 2.3 (4 nodes slipping, 12 sticking); the committed tractions come
 # back from contact/pass1_history (rows 4-6), the committed rows are computed again from the

@@ -12,6 +12,7 @@ program test_contact
    use test_contact_search, only: collect_contact_search
    use test_smoothed_normals, only: collect_smoothed_normals
    use test_mortar_contact, only: collect_mortar_contact
+   use test_face_grid, only: collect_face_grid
    implicit none
    call run_suites([new_testsuite('dual_number', collect_dual_number), &
                     new_testsuite('face_projection', collect_face_projection), &
@@ -23,5 +24,6 @@ program test_contact
                     new_testsuite('contact_patches', collect_contact_patches), &
                     new_testsuite('contact_search', collect_contact_search), &
                     new_testsuite('smoothed_normals', collect_smoothed_normals), &
-                    new_testsuite('mortar_contact', collect_mortar_contact)])
+                    new_testsuite('mortar_contact', collect_mortar_contact), &
+                    new_testsuite('face_grid', collect_face_grid)])
 end program test_contact

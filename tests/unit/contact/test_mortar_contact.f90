@@ -18,15 +18,30 @@
 !>   1e-7, tolerance 1e-8 as in test_contact_fixtures); all three against the full force, the
 !>   rows recomputed, up to the terms the tangent leaves out (docs/contact.md, "Mortar
 !>   contact"; test_tangent);
+!> - degenerate faces (all four nodes at one point; two nodes coinciding, a triangle): no NaN
+!>   anywhere, the collapsed face contributes nothing (zero normal and D_j at its nodes), the
+!>   triangle over a larger master face is covered and D_j = sum_l M_jl there (sum_a N_a^m = 1);
+!> - the slave grid shrunk in its plane by 0.6 about its centre (area 0.36 of the reference,
+!>   below least_mortar_coverage = 0.5 of the reference tributary area) and pressed 1e-6 into
+!>   the master (so tilted as the master, z = -0.1 - 1e-6 + 0.05 x): every node covered,
+!>   a_j = 0.36 sqrt(1 + 0.05^2) times the flat grid's tributary area (1/9, 1/18, 1/36; the
+!>   faces are parallelograms, exact), the interior node 6 in contact;
+!> - first touch: the slave grid 0.1 above the flat master (open) at the last commit, now slid
+!>   by s = (0.03, -0.02) and pressed 1e-6 into it (mu 0.3): the interior node, started from
+!>   its current row as a node open at the last commit, has no tangential traction (exactly 0:
+!>   no slip increment), where taking the committed row would give it the slip traction
+!>   mu p_j (|s| = 0.036 is far beyond the stick limit mu p_j / eps_T);
 !> - the weighted slip increment sum_k (c^n_jk - c_jk) x_k of a slave grid slid by s over a
 !>   flat master: D_j s (the integrals are exact there); of both grids moved rigidly: 0.
 module test_mortar_contact
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_close
    use frix_strings, only: to_string
    use frix_mortar_segments, only: segment_integrals
-   use frix_mortar_contact, only: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact
+   use frix_mortar_contact, only: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, &
+                                  mortar_covered
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_slip, contact_stick
    use frix_friction_law, only: branch_free
@@ -43,7 +58,11 @@ contains
       tests = [new_unittest('half-covered unit face: D and M by hand', test_half_face), &
                new_unittest('covered grid: D = tributary area, sum M = D, linear gap', test_covered_grid), &
                new_unittest('tangent against central differences (frictionless, stick, slip)', test_tangent), &
-               new_unittest('objective slip: a slide gives D_j s, a rigid motion none', test_objective_slip)]
+               new_unittest('objective slip: a slide gives D_j s, a rigid motion none', test_objective_slip), &
+               new_unittest('degenerate faces: zero area and coincident nodes give no NaN', test_degenerate_faces), &
+               new_unittest('coverage in the current configuration: a shrunk slave grid stays covered', &
+                            test_shrunk_coverage), &
+               new_unittest('first touch: motion before contact is no slip', test_first_touch)]
    end subroutine collect_mortar_contact
 
    subroutine test_half_face(error)
@@ -171,7 +190,7 @@ contains
       call committed_rows(back, committed)
       call committed_rows(coords, rows)
       do m = 1, 3
-         call mortar_node(rows, j, 1.0_dp/9.0_dp, node, committed, traction)
+         call mortar_node(rows, j, 1.0_dp/9.0_dp, node, committed, traction, .true.)
          node%x = coords(:, node%nodes)
          allocate (fint(3*size(node%nodes)), tangent(3*size(node%nodes), 3*size(node%nodes)))
          call mortar_node_contact(make_parameters(coefficients(m)), node, 1.0_dp, branch_free, result, fint, tangent)
@@ -196,6 +215,68 @@ contains
          deallocate (fint, tangent)
       end do
    end subroutine test_tangent
+
+   !> Slave faces: the unit square (nodes 1-4, z = 0, outward -z) and one collapsed onto the
+   !> point (2, 2, 0) (nodes 5-8); master: one face over [-1, 3]^2 at z = -0.1 (nodes 9-12,
+   !> outward +z). Then the triangle of the unit square with nodes 1 and 2 coinciding.
+   subroutine test_degenerate_faces(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: coords(3, 12), master_part(4, 4), slave_part(4, 4)
+      type(mortar_rows_t) :: rows
+      logical :: overlap
+      integer :: i
+      coords(:, 1:4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                1.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp], [3, 4])
+      coords(:, 5:8) = spread([2.0_dp, 2.0_dp, 0.0_dp], 2, 4)
+      coords(:, 9:12) = reshape([-1.0_dp, -1.0_dp, -0.1_dp, 3.0_dp, -1.0_dp, -0.1_dp, &
+                                 3.0_dp, 3.0_dp, -0.1_dp, -1.0_dp, 3.0_dp, -0.1_dp], [3, 4])
+      call mortar_rows(coords, [(i, i=1, 8)], reshape([1, 2, 3, 4, 5, 6, 7, 8], [4, 2]), &
+                       reshape([9, 10, 11, 12], [4, 1]), 0.5_dp, rows)
+      call check(error, all(ieee_is_finite(rows%normal)) .and. all(ieee_is_finite(rows%dual_area)) .and. &
+                 all(ieee_is_finite(rows%weight)), 'a collapsed face gives a NaN')
+      if (allocated(error)) return
+      call check(error, all(rows%normal(:, 5:8) == 0.0_dp) .and. all(rows%dual_area(5:8) == 0.0_dp) .and. &
+                 all(abs(rows%dual_area(1:4) - 0.25_dp) <= 1.0e-14_dp), &
+                 'collapsed face: D_j '//to_string(rows%dual_area(5))//', unit square: '//to_string(rows%dual_area(1)))
+      if (allocated(error)) return
+      coords(:, 2) = coords(:, 1)
+      call segment_integrals(coords(:, 1:4), coords(:, 9:12), 0.5_dp, master_part, slave_part, overlap)
+      call check(error, overlap .and. all(ieee_is_finite(master_part)) .and. all(ieee_is_finite(slave_part)), &
+                 'coincident nodes: no overlap or a NaN')
+      if (allocated(error)) return
+      call check(error, maxval(abs(sum(master_part, dim=2) - sum(slave_part, dim=2))) <= 1.0e-12_dp, &
+                 'coincident nodes: sum_l M_jl /= D_j')
+      if (allocated(error)) return
+      call segment_integrals(coords(:, 5:8), coords(:, 9:12), 0.5_dp, master_part, slave_part, overlap)
+      call check(error, .not. overlap .and. all(master_part == 0.0_dp), 'a collapsed face overlaps')
+   end subroutine test_degenerate_faces
+
+   subroutine test_shrunk_coverage(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: factor = 0.6_dp
+      real(dp), parameter :: tilt = sqrt(1.0_dp + 0.05_dp**2)   ! area of the tilted plane per flat area
+      real(dp) :: coords(3, 41), fint(3*41), tangent(3*41, 3*41)
+      type(mortar_rows_t) :: rows
+      type(mortar_node_t) :: node
+      type(contact_point_result_t) :: result
+      integer :: j
+      call grid_rows(coords, rows)
+      coords(1:2, :16) = 0.5_dp + factor*(coords(1:2, :16) - 0.5_dp)
+      coords(3, :16) = -0.1_dp - 1.0e-6_dp + 0.05_dp*coords(1, :16)
+      call committed_rows(coords, rows)
+      call check(error, all([(mortar_covered(rows, j), j=1, 16)]), 'a node of the shrunk grid is not covered')
+      if (allocated(error)) return
+      call check_close(error, rows%tributary_area(6), factor**2*tilt/9.0_dp, 1.0e-13_dp, message='a_6')
+      if (allocated(error)) return
+      call check_close(error, rows%tributary_area(1), factor**2*tilt/36.0_dp, 1.0e-13_dp, message='a_1')
+      if (allocated(error)) return
+      call mortar_node(rows, 6, 1.0_dp/9.0_dp, node)
+      node%x = coords(:, node%nodes)
+      call mortar_node_contact(make_parameters(0.0_dp), node, 1.0_dp, branch_free, result, &
+                               fint(:3*size(node%nodes)), tangent(:3*size(node%nodes), :3*size(node%nodes)))
+      call check(error, result%status == contact_slip .and. result%pressure > 0.0_dp, &
+                 'node 6 of the shrunk grid: status '//to_string(result%status)//', gap '//to_string(result%gap))
+   end subroutine test_shrunk_coverage
 
    !> A node's matrix on its nodes placed into the (123, 123) matrix of the 41 grid nodes.
    pure function scattered(nodes, local) result(global)
@@ -246,7 +327,7 @@ contains
       real(dp), allocatable :: fint(:), tangent(:, :)
       integer :: a
       call committed_rows(coords, rows)
-      call mortar_node(rows, 6, 1.0_dp/9.0_dp, node, committed, traction)
+      call mortar_node(rows, 6, 1.0_dp/9.0_dp, node, committed, traction, .true.)
       node%x = coords(:, node%nodes)
       allocate (fint(3*size(node%nodes)), tangent(3*size(node%nodes), 3*size(node%nodes)))
       call mortar_node_contact(parameters, node, 1.0_dp, branch_free, result, fint, tangent)
@@ -308,7 +389,7 @@ contains
       moved(:, :16) = moved(:, :16) + spread(s, 2, 16)
       call committed_rows(moved, after)
       do j = 1, 16
-         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp])
+         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp], .true.)
          slip = matmul(moved(:, node%nodes), node%committed_weight - node%weight)
          call check(error, norm2(slip - after%dual_area(j)*s) <= 1.0e-13_dp*after%dual_area(j)*norm2(s), &
                     'slid: node '//to_string(j)//' slip off by '//to_string(norm2(slip/after%dual_area(j) - s)))
@@ -319,13 +400,49 @@ contains
       moved = matmul(rotation, coords) + spread([0.4_dp, -1.0_dp, 2.0_dp], 2, 41)
       call committed_rows(moved, after)
       do j = 1, 16
-         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp])
+         call mortar_node(after, j, before%dual_area(j), node, before, [0.0_dp, 0.0_dp, 0.0_dp], .true.)
          slip = matmul(moved(:, node%nodes), node%committed_weight - node%weight)
          call check(error, norm2(slip) <= 1.0e-13_dp*after%dual_area(j), &
                     'rigid motion: node '//to_string(j)//' slip '//to_string(norm2(slip)/after%dual_area(j)))
          if (allocated(error)) return
       end do
    end subroutine test_objective_slip
+
+   subroutine test_first_touch(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: s(3) = [0.03_dp, -0.02_dp, 0.0_dp]
+      real(dp) :: coords(3, 41), moved(3, 41), fint(3*41), tangent(3*41, 3*41), pressure
+      type(mortar_rows_t) :: before, after
+      type(mortar_node_t) :: node
+      type(contact_point_result_t) :: result
+      logical :: closed
+      integer :: n, case
+      call grid_rows(coords, before)
+      coords(3, 17:) = -0.1_dp
+      call committed_rows(coords, before)
+      moved = coords
+      moved(:, :16) = moved(:, :16) + spread(s, 2, 16)
+      moved(3, :16) = -0.1_dp - 1.0e-6_dp
+      call committed_rows(moved, after)
+      do case = 1, 2
+         closed = case == 2   ! 1: open at the last commit (the node's state); 2: taken as closed
+         call mortar_node(after, 6, 1.0_dp/9.0_dp, node, before, [0.0_dp, 0.0_dp, 0.0_dp], closed)
+         node%x = moved(:, node%nodes)
+         n = 3*size(node%nodes)
+         call mortar_node_contact(make_parameters(0.3_dp), node, 1.0_dp, branch_free, result, fint(:n), &
+                                  tangent(:n, :n))
+         pressure = result%pressure
+         if (.not. closed) then
+            call check(error, pressure > 0.0_dp .and. all(result%traction == 0.0_dp), &
+                       'open at the last commit: traction '//to_string(norm2(result%traction))//', pressure '// &
+                       to_string(pressure))
+         else
+            call check_close(error, norm2(result%traction), 0.3_dp*pressure, 1.0e-12_dp, &
+                             message='closed at the last commit: |t| against mu p')
+         end if
+         if (allocated(error)) return
+      end do
+   end subroutine test_first_touch
 
    !> Rodrigues: rotation by `angle` (rad) about the unit `axis`.
    pure function rotation_matrix(axis, angle) result(r)
