@@ -27,7 +27,7 @@ module frix_contact_assembly
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_face_projection, only: face_normal, face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
-                                  contact_open, contact_slip
+                                  contact_open, contact_slip, add_touching_stiffness
    use frix_contact_patches, only: surface_patches, check_patch_rings, patch_faces_of, surface_faces, &
                                    surface_is_curved, all_faces_angle
    use frix_contact_parameters, only: contact_parameters_t
@@ -518,29 +518,6 @@ contains
          pass%slipped(i) = .false.
       end if
    end function slip_reversed
-
-   !> Touching stiffness (no force): D = A (k_N n n + eps_T (I - n n)) acting on the gap of
-   !> the slave node relative to its contact point, K_ab += c_a c_b D over the kernel's nodes with
-   !> c = [1, -N_1, ..., -N_4] on a master face, [1] against a rigid plane (force/length).
-   pure subroutine add_touching_stiffness(area, normal_stiffness, tangential_penalty, normal, weights, tangent)
-      real(dp), intent(in) :: area               !! A_s (area)
-      real(dp), intent(in) :: normal_stiffness   !! k_N, the normal law's (force/area/length)
-      real(dp), intent(in) :: tangential_penalty !! eps_T, 0 without friction (force/area/length)
-      real(dp), intent(in) :: normal(3)       !! unit normal n
-      real(dp), intent(in) :: weights(:)      !! c_a per node of the kernel
-      real(dp), intent(inout) :: tangent(:, :)  !! (3 size(weights), 3 size(weights))
-      real(dp) :: block(3, 3)
-      integer :: a, b, k
-      do k = 1, 3
-         block(:, k) = area*(normal_stiffness - tangential_penalty)*normal*normal(k)
-         block(k, k) = block(k, k) + area*tangential_penalty
-      end do
-      do b = 1, size(weights)
-         do a = 1, size(weights)
-            tangent(3*a - 2:3*a, 3*b - 2:3*b) = tangent(3*a - 2:3*a, 3*b - 2:3*b) + weights(a)*weights(b)*block
-         end do
-      end do
-   end subroutine add_touching_stiffness
 
    !> Accept the current contact state as converged: anchors (mortar passes: rows at the
    !> converged displacements u and tractions), accumulated slip, multipliers, and the

@@ -12,9 +12,8 @@ module frix_mortar_assembly
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_contact_pass, only: contact_pass_t
    use frix_contact_parameters, only: contact_parameters_t
-   use frix_contact_kernel, only: contact_point_result_t, contact_open
-   use frix_mortar_contact, only: mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, &
-                                  mortar_touching_stiffness, mortar_covered
+   use frix_contact_kernel, only: contact_point_result_t, contact_open, add_touching_stiffness
+   use frix_mortar_contact, only: mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, mortar_covered
    implicit none
    private
 
@@ -100,8 +99,8 @@ contains
                                      node_tangent)
             if (touching .and. pass%result(i)%status == contact_open .and. pass%result(i)%gap >= 0.0_dp .and. &
                 pass%result(i)%gap <= parameters%gap_tolerance) &
-               node_tangent = node_tangent + mortar_touching_stiffness(node, parameters%normal%stiffness(), &
-                                                                       tangential_penalty)
+               call add_touching_stiffness(1.0_dp/node%dual_area, parameters%normal%stiffness(), tangential_penalty, &
+                                           node%normal, node%weight, node_tangent)
             do k = 1, n
                fint(3*node%nodes(k) - 2:3*node%nodes(k)) = fint(3*node%nodes(k) - 2:3*node%nodes(k)) + &
                                                            node_force(3*k - 2:3*k)

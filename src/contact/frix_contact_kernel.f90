@@ -58,7 +58,7 @@ module frix_contact_kernel
    implicit none
    private
 
-   public :: contact_point_result_t, node_face_contact, node_plane_contact
+   public :: contact_point_result_t, node_face_contact, node_plane_contact, add_touching_stiffness
    public :: max_ring_nodes
    public :: contact_open, contact_stick, contact_slip
 
@@ -596,4 +596,28 @@ contains
       real(dp) :: direction(3)
       direction = vector/norm2(vector)
    end function unit
+
+   !> Touching stiffness (no force): D = A (k_N n n + eps_T (I - n n)) acting on the gap of
+   !> the slave node relative to its contact point, K_ab += c_a c_b D over the nodes with
+   !> c = [1, -N_1, ..., -N_4] on a master face, [1] against a rigid plane (force/length); a
+   !> mortar row passes A = 1 / D_j and its coefficients c_jk (frix_mortar_assembly).
+   pure subroutine add_touching_stiffness(area, normal_stiffness, tangential_penalty, normal, weights, tangent)
+      real(dp), intent(in) :: area               !! A_s (area; 1 / D_j for a mortar row)
+      real(dp), intent(in) :: normal_stiffness   !! k_N, the normal law's (force/area/length)
+      real(dp), intent(in) :: tangential_penalty !! eps_T, 0 without friction (force/area/length)
+      real(dp), intent(in) :: normal(3)       !! unit normal n
+      real(dp), intent(in) :: weights(:)      !! c_a per node
+      real(dp), intent(inout) :: tangent(:, :)  !! (3 size(weights), 3 size(weights))
+      real(dp) :: block(3, 3)
+      integer :: a, b, k
+      do k = 1, 3
+         block(:, k) = area*(normal_stiffness - tangential_penalty)*normal*normal(k)
+         block(k, k) = block(k, k) + area*tangential_penalty
+      end do
+      do b = 1, size(weights)
+         do a = 1, size(weights)
+            tangent(3*a - 2:3*a, 3*b - 2:3*b) = tangent(3*a - 2:3*a, 3*b - 2:3*b) + weights(a)*weights(b)*block
+         end do
+      end do
+   end subroutine add_touching_stiffness
 end module frix_contact_kernel

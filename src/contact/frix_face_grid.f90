@@ -4,6 +4,7 @@
 !> face's box). Built in linear time; a query visits the cells the point or box covers.
 module frix_face_grid
    use frix_kinds, only: dp
+   use frix_sorted_order, only: sorted_order
    implicit none
    private
 
@@ -137,22 +138,6 @@ contains
             end do
          end do
       end do
-      call sort_increasing(faces(:n_found))
+      faces(:n_found) = faces(sorted_order(reshape(faces(:n_found), [1, n_found])))
    end subroutine faces_meeting_box
-
-   !> Insertion sort (the lists are a few faces long).
-   pure subroutine sort_increasing(values)
-      integer, intent(inout) :: values(:)
-      integer :: k, l, value
-      do k = 2, size(values)
-         value = values(k)
-         l = k - 1
-         do while (l >= 1)
-            if (values(l) <= value) exit
-            values(l + 1) = values(l)
-            l = l - 1
-         end do
-         values(l + 1) = value
-      end do
-   end subroutine sort_increasing
 end module frix_face_grid

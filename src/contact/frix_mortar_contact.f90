@@ -47,7 +47,7 @@ module frix_mortar_contact
    implicit none
    private
 
-   public :: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact, mortar_touching_stiffness
+   public :: mortar_rows_t, mortar_rows, mortar_node_t, mortar_node, mortar_node_contact
    public :: mortar_covered
 
    !> A slave node takes part in the contact when the master covers this fraction of its
@@ -96,6 +96,7 @@ contains
       real(dp), intent(in) :: distance
       type(mortar_rows_t), intent(out) :: rows
       type(triplets_t) :: m, d
+      integer, allocatable :: position_of(:)
       integer :: k, n_slave
       n_slave = size(slave_nodes)
       allocate (rows%master_face(n_slave))
@@ -110,20 +111,20 @@ contains
       ! comes and goes between iterations (slivers of coincident edges hover at 1e-12)
       call compress_rows(m, n_slave, rows%start, rows%nodes, rows%weight, drop=0.0_dp)
       rows%weight = -rows%weight
-      rows%normal = slave_nodal_normals(coords, slave_nodes, slave_faces)
-      rows%tributary_area = tributary_areas(coords, slave_nodes, slave_faces)
+      position_of = slave_positions(size(coords, 2), slave_nodes)
+      rows%normal = slave_nodal_normals(coords, position_of, slave_faces)
+      rows%tributary_area = tributary_areas(coords, position_of, slave_faces)
    end subroutine mortar_rows
 
    !> a_j = int N_j dA over the slave faces at node j at the coordinates `coords` (area;
    !> face_area_weights, as the reference A_j of frix_contact_pass).
-   function tributary_areas(coords, slave_nodes, slave_faces) result(area)
+   pure function tributary_areas(coords, position_of, slave_faces) result(area)
       real(dp), intent(in) :: coords(:, :)
-      integer, intent(in) :: slave_nodes(:), slave_faces(:, :)
-      real(dp) :: area(size(slave_nodes))
-      integer, allocatable :: position_of(:)
+      integer, intent(in) :: position_of(:)   !! slave_positions'
+      integer, intent(in) :: slave_faces(:, :)
+      real(dp) :: area(maxval(position_of))
       real(dp) :: weights(4)
       integer :: f
-      position_of = slave_positions(size(coords, 2), slave_nodes)
       area = 0.0_dp
       do f = 1, size(slave_faces, 2)
          call face_area_weights(coords(:, slave_faces(:, f)), weights)
@@ -161,14 +162,13 @@ contains
    !> (at the node's corner of each face), i.e. out of the master body. A face with no normal at
    !> the node's corner (zero area, or a node coinciding with a neighbour: face_normal gives the
    !> zero vector) adds nothing; a node with no normal at all keeps n_j = 0.
-   function slave_nodal_normals(coords, slave_nodes, slave_faces) result(normal)
+   function slave_nodal_normals(coords, position_of, slave_faces) result(normal)
       real(dp), intent(in) :: coords(:, :)
-      integer, intent(in) :: slave_nodes(:), slave_faces(:, :)
-      real(dp) :: normal(3, size(slave_nodes))
-      integer, allocatable :: position_of(:)
+      integer, intent(in) :: position_of(:)   !! slave_positions'
+      integer, intent(in) :: slave_faces(:, :)
+      real(dp) :: normal(3, maxval(position_of))
       integer :: f, a, j
       real(dp) :: length
-      position_of = slave_positions(size(coords, 2), slave_nodes)
       normal = 0.0_dp
       do f = 1, size(slave_faces, 2)
          do a = 1, 4
@@ -176,7 +176,7 @@ contains
             normal(:, j) = normal(:, j) - face_normal(coords(:, slave_faces(:, f)), [face_node_xi(a), face_node_eta(a)])
          end do
       end do
-      do j = 1, size(slave_nodes)
+      do j = 1, size(normal, 2)
          length = norm2(normal(:, j))
          if (length > 0.0_dp) normal(:, j) = normal(:, j)/length
       end do
@@ -286,9 +286,10 @@ contains
          if (parameters%friction%frictionless() .or. node%fresh) return
          ! d t / d x_l = d_traction (-eps_T/D_j) P c^n_l + d_pressure (dp_j/dx_l) (P u_j to first
          ! order: header), dp_j / dx_l = p_N'(g) c_l n^T / D_j; K_kl -= c_k d t / d x_l
+         ! d t / d t_trial on the tangent plane's part of the slip: d_traction (I - n n)
+         d_traction = d_traction - matmul(d_traction, spread(n, 2, 3)*spread(n, 1, 3))
          do l = 1, size(c)
-            associate (column => -parameters%tangential_penalty/dual_area*node%committed_weight(l)* &
-                                 (d_traction - matmul(d_traction, spread(n, 2, 3)*spread(n, 1, 3))) + &
+            associate (column => -parameters%tangential_penalty/dual_area*node%committed_weight(l)*d_traction + &
                                  spread(d_pressure, 2, 3)*spread(pressure%gradient(1)*c(l)/dual_area*n, 1, 3))
                do k = 1, size(c)
                   tangent(3*k - 2:3*k, 3*l - 2:3*l) = tangent(3*k - 2:3*k, 3*l - 2:3*l) - c(k)*column
@@ -330,27 +331,6 @@ contains
       result%law_status = merge(contact_slip, contact_stick, law_slipping)
       if (slipping) result%slip_increment = (norm2(projected) - norm2(traction))/parameters%tangential_penalty
    end subroutine friction_return
-
-   !> The touching stiffness of slave node `node` (no force): the springs k_N (normal) and
-   !> eps_T (tangential; 0 without friction) per unit area on its weighted relative position,
-   !> (1 / D_j) c c^T (k_N n n + eps_T (I - n n)) over its nodes (force/length).
-   pure function mortar_touching_stiffness(node, normal_stiffness, tangential_penalty) result(stiffness)
-      type(mortar_node_t), intent(in) :: node
-      real(dp), intent(in) :: normal_stiffness, tangential_penalty   !! force/area/length
-      real(dp), allocatable :: stiffness(:, :)
-      real(dp) :: block(3, 3)
-      integer :: k, l
-      block = (normal_stiffness - tangential_penalty)*spread(node%normal, 2, 3)*spread(node%normal, 1, 3)
-      do k = 1, 3
-         block(k, k) = block(k, k) + tangential_penalty
-      end do
-      allocate (stiffness(3*size(node%weight), 3*size(node%weight)))
-      do l = 1, size(node%weight)
-         do k = 1, size(node%weight)
-            stiffness(3*k - 2:3*k, 3*l - 2:3*l) = node%weight(k)*node%weight(l)/node%dual_area*block
-         end do
-      end do
-   end function mortar_touching_stiffness
 
    !> factor (c n)(c n)^T (3 size(c) squared).
    pure function mortar_row_stiffness_of(c, n, factor) result(stiffness)
