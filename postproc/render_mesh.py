@@ -44,6 +44,9 @@ def build_parser():
                              "auto = largest displacement shown as 10%% of the mesh diagonal)")
     parser.add_argument("--view", default="25,-60", metavar="ELEV,AZIM",
                         help="camera elevation and azimuth in degrees (default 25,-60)")
+    parser.add_argument("--up", default="z", choices=("x", "y", "z"),
+                        help="the model axis drawn vertical (default z; y for a model whose "
+                             "gravity acts along -y)")
     parser.add_argument("--cmap", default="viridis", help="matplotlib colormap (default viridis)")
     parser.add_argument("--range", default=None, metavar="MIN,MAX",
                         help="colour range (default: the field's range)")
@@ -81,6 +84,11 @@ def magnification(text, points, displacement):
     return factor
 
 
+# The model axes drawn as the plot's (horizontal, depth, vertical) for each --up: a cyclic
+# permutation, so that the drawn frame stays right-handed.
+DRAWN_AXES = {"z": (0, 1, 2), "y": (2, 0, 1), "x": (1, 2, 0)}
+
+
 def main(argv=None):
     args = build_parser().parse_args(argv)
     elevation, azimuth = frix_results.parse_floats(args.view, 2, "--view")
@@ -96,6 +104,8 @@ def main(argv=None):
     displacement = np.asarray(mesh.point_data["displacement"], dtype=float) \
         if "displacement" in mesh.point_data else np.zeros_like(points)
     factor = magnification(args.scale, points, displacement)
+    drawn = list(DRAWN_AXES[args.up])
+    points, displacement = points[:, drawn], displacement[:, drawn]
     deformed = points + factor * displacement
 
     cells = np.arange(connectivity.shape[0])
@@ -146,9 +156,10 @@ def main(argv=None):
     axes.set_ylim(lower[1], lower[1] + extent[1])
     axes.set_zlim(lower[2], lower[2] + extent[2])
     axes.set_box_aspect(tuple(extent))
-    axes.set_xlabel("x")
-    axes.set_ylabel("y")
-    axes.set_zlabel("z")
+    axis_names = "xyz"
+    axes.set_xlabel(axis_names[drawn[0]])
+    axes.set_ylabel(axis_names[drawn[1]])
+    axes.set_zlabel(axis_names[drawn[2]])
     axes.view_init(elev=elevation, azim=azimuth)
     mappable = cm.ScalarMappable(norm=normalize, cmap=colormap)
     mappable.set_array(values)
@@ -157,6 +168,7 @@ def main(argv=None):
     axes.set_title(args.title or f"{args.field}, {entry.label()}, displacement x {factor:.4g}")
     frix_results.save_figure(figure, args.output)
     print(f"wrote {args.output} ({len(faces)} boundary faces, scale {factor:.6g})")
+    print(f"vertical axis {axis_names[drawn[2]]}, drawn height {extent[2]:.6g}")
     return 0
 
 

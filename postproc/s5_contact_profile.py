@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """Contact pressure and shear around a buried pipe against the angle from the crown, from a
-frix HDF5 results file (S5, docs/verification/s5.md).
+frix HDF5 results file (S5, docs/verification/s5.md, and any pipe along a coordinate axis).
 
 For every slave node of contact pass 1 (frix's order: first appearance over the slave
-surface's faces) on the plane y = 0 (the front face of the slab) it
+surface's faces) in one cross-section (--section, default the mesh's smallest coordinate
+along the pipe: S5's front face y = 0; the pipe along --along, default y, its crown towards
+--up, default z) it
 takes frix's contact pressure p_N, tangential traction t and the normal n frix used (increment
 group `contact/`, dataset `normal`: t is tangential to it). Files written before frix stored
 `contact/normal` do not have it: n is then rebuilt (the facet normal of the master face in the
@@ -19,7 +21,9 @@ mirrored face would do), e_theta = (e_r,z, 0, -e_r,x) pointing away from the cro
     tau   =  f . e_theta   shear on the pipe
     t_frix = |t|           frix's own tangential traction (zero without friction)
     kink  = angle between n and e_r (degrees)
-The angle is that of the node's reference position, from the crown (--axis: the pipe axis).
+The angle is that of the node's reference position, from the crown (--axis: the pipe axis),
+towards e_h = e_along x e_up (x for S5). In a half model (every node of the section on one
+side of the plane through the axis and the crown) that plane is taken as a symmetry plane.
 The sign of f: + when the pipe is the slave surface, - when it is the master (--pipe-master).
 Columns printed (or written with --csv): node angle_deg p_N t_frix p_r tau kink_deg.
 --plot PNG draws p_r and tau (and p_N) against the angle.
@@ -53,7 +57,22 @@ def smoothed_normal(x, master_faces, nodal_normals, face, xi1, xi2):
     return m / np.linalg.norm(m)
 
 
-def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, smoothed=False):
+def pipe_frame(along, up):
+    """The rotation Q (rows: the model's unit vectors e_h, e_along, e_up) into the frame in
+    which the pipe axis is the second coordinate and the crown direction the third, as in S5;
+    e_h = e_along x e_up, so that the frame is right-handed and normals keep their sign."""
+    unit = {name: np.eye(3)[k] for k, name in enumerate("xyz")}
+    if along not in unit or up not in unit or along == up:
+        sys.exit("s5_contact_profile.py: --along and --up must be two different axes of x, y, z")
+    return np.array([np.cross(unit[along], unit[up]), unit[along], unit[up]])
+
+
+def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, smoothed=False,
+            along="y", up="z", section=None):
+    """The table of the module head for the pipe along --along with its crown towards --up;
+    (axis_x, axis_z): the pipe axis in the section's (e_h, e_up) coordinates; `section`: the
+    position along the axis of the section taken (default: the smallest)."""
+    frame = pipe_frame(along, up)
     with h5py.File(path, "r") as f:
         groups = sorted(f["increments"].keys())
         g = f["increments"][groups[-1] if increment is None else "%06d" % increment]
@@ -70,7 +89,12 @@ def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, sm
         slave_face = f["mesh/surfaces/%s/faces" % slave][:]
         surf_el = f["mesh/surfaces/%s/elements" % master][:]
         surf_face = f["mesh/surfaces/%s/faces" % master][:]
+    xref, u, trac = xref @ frame.T, u @ frame.T, trac @ frame.T
+    if stored_normal is not None:
+        stored_normal = stored_normal @ frame.T
     x = xref + u
+    if section is None:
+        section = xref[:, 1].min()
     # slave nodes in frix's pass order: first appearance over the slave surface's faces
     slaves, seen = [], set()
     for e, fc in zip(slave_el, slave_face):
@@ -99,10 +123,14 @@ def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, sm
         nodes = [conn[e - 1][a - 1] - 1 for a in FACES[int(fc)]]
         for a, node in enumerate(nodes):
             slave_normals[node] = slave_normals.get(node, 0.0) + face_normal(x[nodes], *corners[a])
+    in_section = [k for k, i in enumerate(slaves) if abs(xref[i, 1] - section) <= 1e-9]
+    # a half model (every section node on one side of the plane through the axis and the
+    # crown, as S5): that plane is a symmetry plane
+    half_model = all(xref[slaves[k], 0] - axis_x >= -1e-9 for k in in_section) or \
+        all(xref[slaves[k], 0] - axis_x <= 1e-9 for k in in_section)
     rows = []
-    for k, i in enumerate(slaves):
-        if abs(xref[i, 1] - xref[:, 1].min()) > 1e-9:
-            continue
+    for k in in_section:
+        i = slaves[k]
         face = int(hist[k, 0])
         el = conn[surf_el[face - 1] - 1]           # internal numbers, 1-based
         corner = [el[a - 1] - 1 for a in FACES[int(surf_face[face - 1])]]
@@ -118,7 +146,7 @@ def profile(path, slave, master, axis_x, axis_z, pipe_master, increment=None, sm
         dx, dz = xref[i, 0] - axis_x, xref[i, 2] - axis_z
         angle = np.arctan2(dx, dz)              # from the crown, towards +x (reference)
         e_r = slave_normals[i] * (-1.0 if pipe_master else 1.0)   # out of the pipe, current
-        if abs(xref[i, 0] - axis_x) < 1e-9:
+        if half_model and abs(xref[i, 0] - axis_x) < 1e-9:
             e_r[0] = 0.0                        # on the symmetry plane: mirrored neighbour
         e_r[1] = 0.0
         e_r /= np.linalg.norm(e_r)
@@ -139,7 +167,17 @@ def main():
     parser.add_argument("--master", default="cavity", help="master surface name (cavity)")
     parser.add_argument("--pipe-master", action="store_true",
                         help="the pipe is the master surface (the soil cavity is the slave)")
-    parser.add_argument("--axis", default="0,-2", help="pipe axis x,z (0,-2)")
+    parser.add_argument("--axis", default="0,-2",
+                        help="the pipe axis's position in the section: horizontal,vertical "
+                             "coordinates (0,-2; with the defaults of --along and --up: x,z)")
+    parser.add_argument("--along", default="y", choices=("x", "y", "z"),
+                        help="the model axis the pipe runs along (y)")
+    parser.add_argument("--up", default="z", choices=("x", "y", "z"),
+                        help="the model axis towards the crown (z); the horizontal axis of "
+                             "the section is along x up")
+    parser.add_argument("--section", type=float, default=None,
+                        help="the section's coordinate along the pipe (default: the smallest "
+                             "of the mesh, S5's front face)")
     parser.add_argument("--smoothed", action="store_true",
                         help="files without contact/normal only: the pair used NORMALS Smoothed, "
                              "rebuild frix's smoothed normal")
@@ -149,7 +187,7 @@ def main():
     args = parser.parse_args()
     ax, az = (float(v) for v in args.axis.split(","))
     table = profile(args.h5, args.slave, args.master, ax, az, args.pipe_master, args.increment,
-                    args.smoothed)
+                    args.smoothed, args.along, args.up, args.section)
     header = "node,angle_deg,p_N,t_frix,p_r,tau,kink_deg"
     if args.csv:
         np.savetxt(args.csv, table, delimiter=",", header=header, comments="",

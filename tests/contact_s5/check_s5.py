@@ -17,7 +17,11 @@ checks
      vertical stress P, default 100) within REL;
   4. with --shear-ratio LOW HIGH: the largest |tau| / largest p_r of the contact profile
      (postproc/s5_contact_profile.py, from <BASE>.h5) over the slave nodes off the symmetry
-     plane lies in [LOW, HIGH] (the spurious shear of a frictionless interface).
+     plane lies in [LOW, HIGH] (the spurious shear of a frictionless interface); and the
+     same profile from a copy of the file with the model turned so that the pipe runs along
+     z and its crown points along y (x' = -x, y' = z, z' = y; read with --along z --up y and
+     the axis at (x, z) = (0, -2), the section at z' = 0) equals it to 1e-12 of its largest
+     value (the script's frame for pipes in other directions).
 """
 import csv
 import os
@@ -30,6 +34,25 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "postproc"))
 def fail(message):
     print("check_s5.py: FAIL: " + message)
     sys.exit(1)
+
+
+def turned_copy(source, target):
+    """A copy of the HDF5 results file `source` with every position and vector turned by
+    x' = -x, y' = z, z' = y (a rotation: the S5 pipe then runs along z, its crown along y)."""
+    import shutil
+    import h5py
+    import numpy as np
+    turn = np.array([[-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]])
+    shutil.copyfile(source, target)
+    with h5py.File(target, "r+") as f:
+        vectors = [f["mesh/coordinates"]]
+        for group in f["increments"].values():
+            vectors += [group["displacement"], group["contact/traction"]]
+            if "normal" in group["contact"]:
+                vectors.append(group["contact/normal"])
+        for dataset in vectors:
+            dataset[...] = dataset[...] @ turn.T
+    return target
 
 
 def read_reference(path, base):
@@ -90,6 +113,15 @@ def main():
         low, high = float(args[i + 1]), float(args[i + 2])
         table = profile(os.path.join(outdir, base + ".h5"), "pipe_outer", "cavity", 0.0, -2.0,
                         False, None, "--smoothed" in args)
+        turned = turned_copy(os.path.join(outdir, base + ".h5"), os.path.join(outdir, base + "_turned.h5"))
+        table_turned = profile(turned, "pipe_outer", "cavity", 0.0, -2.0, False, None, "--smoothed" in args,
+                               along="z", up="y", section=0.0)
+        difference = abs(table_turned - table).max() / abs(table).max()
+        print("  profile of the turned model (pipe along z, crown along y): largest difference %.2e"
+              % difference)
+        if table_turned.shape != table.shape or difference > 1e-12:
+            print("check_s5.py: FAIL: the profile depends on the model's orientation")
+            status = 1
         inner = table[(table[:, 1] > 1e-6) & (table[:, 1] < 180 - 1e-6)]
         ratio = abs(inner[:, 5]).max() / abs(inner[:, 4]).max()
         print("  spurious shear: max |tau| / max p_r = %.4f off the symmetry plane (band [%g, %g])"

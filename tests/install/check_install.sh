@@ -1,7 +1,7 @@
 #!/bin/bash
 # check_install.sh CMAKE BUILD VERSION: installs BUILD with `CMAKE --install BUILD --prefix P`
 # into a scratch prefix P, then, from a folder outside the source and build trees, checks that
-# P/bin/frix --version names VERSION, that every P/bin/frix-<script> runs (--help, exit 0;
+# P/bin/frix --version names VERSION, that every P/bin/frix-<script> runs (--help, exit 0, its usage naming the command;
 # frix-plot-history also draws a plot from a small history file), that the Python modules are
 # in P/share/frix/python and the documentation in P/share/doc/frix.
 # Prints PASS:/FAIL: lines; exit 0 if all pass.
@@ -29,7 +29,8 @@ commands=$(cd "$prefix/bin" && ls frix-* 2> /dev/null)
 check "postproc commands installed ($(echo $commands))" test -n "$commands"
 check "frix-plot-history installed" test -x "$prefix/bin/frix-plot-history"
 for command in $commands; do
-    check "$command --help" bash -c '"$1" --help > help.txt 2>&1 && grep -q "usage" help.txt' _ "$prefix/bin/$command"
+    check "$command --help names $command" \
+          bash -c '"$1" --help > help.txt 2>&1 && grep -q "usage: $2" help.txt' _ "$prefix/bin/$command" "$command"
 done
 check "the module frix_results.py is no command" test ! -e "$prefix/bin/frix-frix-results"
 check "frix_results.py in P/share/frix/python" test -f "$prefix/share/frix/python/frix_results.py"

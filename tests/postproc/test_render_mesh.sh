@@ -74,6 +74,15 @@ else
     fail "render_mesh --block 1: $(cat "$WORK/log.txt")"
 fi
 
+# --up: the 4 x 1 x 1 bar along x drawn with x vertical is 4 high (with z up: 1, the
+# deformed height at scale 1, 1 + 1e-4 or less).
+if "${RENDER[@]}" "$OUT/bar.pvd" --up x -o "$WORK/up.png" > "$WORK/log.txt" 2>&1 \
+        && grep -q "vertical axis x, drawn height 4" "$WORK/log.txt"; then
+    check_png "$WORK/up.png" "render_mesh --up x (the bar's length vertical)"
+else
+    fail "render_mesh --up x: $(cat "$WORK/log.txt")"
+fi
+
 # 3. User mistakes.
 expect_user_error "empty --block" "no element in block(s) 2" \
     "${RENDER[@]}" "$OUT/bar.pvd" --block 2 -o "$WORK/x.png"
