@@ -58,6 +58,16 @@ module frix_driver
       real(dp) :: path_increment = 0.0_dp  !! CONTROL Path: driven displacement per nominal increment
    end type resume_t
 
+   !> The progress lines' clock: the time-left estimate extrapolates the run's mean rate (wall
+   !> time per unit of pseudo time since the first increment of this run, cut-backs included),
+   !> which changes slowly, rather than the last increment's, which jumps with every cut-back
+   !> and every change of the increment's size.
+   type :: progress_t
+      logical :: quiet = .false.
+      real(dp) :: start_wall = 0.0_dp   !! wall clock when the run's first increment began [s]
+      real(dp) :: start_time = 0.0_dp   !! the pseudo time it began from
+   end type progress_t
+
    !> The increment control of one step (see the module head).
    type :: step_control_t
       integer :: step = 0
@@ -127,6 +137,7 @@ contains
       type(results_output_t) :: output
       integer :: step, first_step
       type(resume_t) :: resume
+      type(progress_t) :: progress
 
       call create_analysis_state(model, state, error)
       if (allocated(error)) return
@@ -145,9 +156,10 @@ contains
       end if
       if (.not. options%quiet) call print_banner(model, context)
 
+      progress = progress_t(options%quiet, wall_clock_seconds(), state%committed_time)
       do step = first_step, size(model%steps)
          if (step /= first_step) resume = resume_t()
-         call run_step(model, step, resume, context, state, output, options%quiet, error)
+         call run_step(model, step, resume, context, state, output, progress, error)
          if (allocated(error)) exit
       end do
       call output%close(error)   ! every file, also after a failure: an error keeps the first
@@ -218,21 +230,23 @@ contains
    end function peak_resident_megabytes
 
    !> March through step `step`, cutting back failed increments.
-   subroutine run_step(model, step, resume, context, state, output, quiet, error)
+   subroutine run_step(model, step, resume, context, state, output, progress, error)
       type(model_t), intent(in) :: model
       integer, intent(in) :: step
       type(resume_t), intent(in) :: resume   !! a restart inside this step: where it resumes
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       type(results_output_t), intent(inout) :: output
-      logical, intent(in) :: quiet
+      type(progress_t), intent(in) :: progress
       type(error_t), allocatable, intent(out) :: error
       type(step_control_t) :: control
       type(newton_report_t) :: report
       integer :: iterations
       real(dp) :: increment_start, previous_time
       character(len=:), allocatable :: attempted
-      logical :: repeat
+      logical :: repeat, quiet
+
+      quiet = progress%quiet
 
       call begin_step(model, step, resume, state, control)
       if (model%steps(step)%reset_displacement .and. resume%increment == 0) then
@@ -260,7 +274,7 @@ contains
                control%size_now = min(control%nominal, growth_factor*control%size_now)
             call accept_increment(model, control, context, state, report, output, error)
             if (allocated(error)) return
-            if (.not. quiet) call print_increment_done(model, state%time, previous_time, &
+            if (.not. quiet) call print_increment_done(model, state%time, previous_time, progress, &
                                                        wall_clock_seconds() - increment_start, iterations)
          else
             call cut_back(model, control, state, report, attempted, output, quiet, error)
@@ -570,10 +584,11 @@ contains
    end function canonical
 
    !> The line closing a converged increment: its wall time and an estimate of the time left,
-   !> extrapolating the pseudo-time rate of this increment to the end of the last step.
-   subroutine print_increment_done(model, time, previous_time, seconds, iterations)
+   !> the run's mean rate (progress_t) extrapolated to the end of the last step.
+   subroutine print_increment_done(model, time, previous_time, progress, seconds, iterations)
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: time, previous_time, seconds
+      type(progress_t), intent(in) :: progress
       integer, intent(in) :: iterations
       real(dp) :: left, end_time
       end_time = real(size(model%steps), dp)
@@ -582,8 +597,8 @@ contains
          padded(fixed_point(end_time, 1), 6)//' ('//padded(fixed_point(100.0_dp*time/end_time, 1), 5)//' %)'
       ! no estimate when the load factor decreased (path following past a limit point) or
       ! when the rate gives none (a pseudo time past the end, a step of zero length)
-      if (time > previous_time) then
-         left = seconds*(end_time - time)/(time - previous_time)
+      if (time > previous_time .and. time > progress%start_time) then
+         left = (wall_clock_seconds() - progress%start_wall)*(end_time - time)/(time - progress%start_time)
          if (left >= 0.0_dp .and. left < 1.0e9_dp) then
             write (*, '(a)', advance='no') ',  about'//padded(fixed_point(left, 1), 10)//' s left'
          else if (left >= 1.0e9_dp) then
