@@ -207,3 +207,10 @@ add_test(NAME hdf5_disk_full
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/disk_full_test.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/io/write_failure.dck)
 set_tests_properties(hdf5_disk_full PROPERTIES LABELS regression SKIP_RETURN_CODE 77 TIMEOUT ${scaled_60})
+
+# frix --check on a valid deck lists what it found (docs/deck-format.md, "Checking a deck"):
+# the S5 deck's 16 pipe elements (one layer through the wall) give 16 faces on each pipe
+# surface; its pair and its element blocks as the deck defines them.
+add_test(NAME check_summary_s5 COMMAND ${FRIX_BIN} --check ${PROJECT_SOURCE_DIR}/inputs/s5_buried_pipe/s5_mu0.dck)
+set_tests_properties(check_summary_s5 PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION
+  "mesh: 846 nodes, 360 elements, 2538 equations.*block 1: 16 elements HEX8-EAS9 .*surfaces \\(faces\\):.* cavity \\(16\\) pipe_outer \\(16\\).*contact pair 1: slave pipe_outer, master cavity, node-to-segment, 1 pass.*steps: 1, 4 nominal increments")

@@ -30,6 +30,7 @@ module frix_driver
    use frix_results_collection, only: collect_results
    use frix_increment_results, only: increment_results_t
    use frix_linear_solver, only: wall_clock_seconds
+   use frix_model_summary, only: model_summary
    use frix_state_restart, only: read_state_restart
    use frix_hdf5_file, only: hdf5_finalize
    use frix_stop_request, only: stop_requested, stop_signal_name
@@ -97,7 +98,8 @@ contains
       call read_deck(options%deck_path, model, error)
       if (allocated(error)) return
       if (options%check_only) then
-         if (.not. options%quiet) write (*, '(a)') 'frix: '//options%deck_path//': deck is valid'
+         if (.not. options%quiet) write (*, '(a)', advance='no') 'frix: '//options%deck_path//': deck is valid'// &
+                                     new_line('a')//model_summary(model)
          return
       end if
       call run_analysis(model, options, start, error)
