@@ -214,3 +214,7 @@ set_tests_properties(hdf5_disk_full PROPERTIES LABELS regression SKIP_RETURN_COD
 add_test(NAME check_summary_s5 COMMAND ${FRIX_BIN} --check ${PROJECT_SOURCE_DIR}/inputs/s5_buried_pipe/s5_mu0.dck)
 set_tests_properties(check_summary_s5 PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION
   "mesh: 846 nodes, 360 elements, 2538 equations.*block 1: 16 elements HEX8-EAS9 .*surfaces \\(faces\\):.* cavity \\(16\\) pipe_outer \\(16\\).*contact pair 1: slave pipe_outer, master cavity, node-to-segment, 1 pass.*steps: 1, 4 nominal increments")
+# A run and its restart joined into one series by postproc/join_restart.py.
+add_test(NAME restart_join_series COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/join_restart_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1.dck ${PROJECT_SOURCE_DIR}/postproc)
+set_tests_properties(restart_join_series PROPERTIES LABELS "regression;contact")
