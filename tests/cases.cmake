@@ -218,3 +218,7 @@ set_tests_properties(check_summary_s5 PROPERTIES LABELS regression PASS_REGULAR_
 add_test(NAME restart_join_series COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/join_restart_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1.dck ${PROJECT_SOURCE_DIR}/postproc)
 set_tests_properties(restart_join_series PROPERTIES LABELS "regression;contact")
+# ParaView opens, warps, colours and renders a frix .pvd (pvpython under xvfb-run); skipped
+# (exit 77) where ParaView is not installed.
+add_test(NAME paraview_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/postproc/paraview_test.sh ${FRIX_BIN})
+set_tests_properties(paraview_render PROPERTIES LABELS "paraview;postproc" SKIP_RETURN_CODE 77 TIMEOUT ${scaled_60})
