@@ -62,6 +62,7 @@ module frix_hdf5_results
       type(named_array_t), allocatable :: contact(:)
       type(named_array_t), allocatable :: fields(:)   !! named integration-point fields
       type(named_array_t), allocatable :: control(:)  !! the increment control, for restarts
+      type(named_array_t), allocatable :: history_columns(:)   !! the history's values, one each
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
@@ -69,6 +70,7 @@ module frix_hdf5_results
       procedure :: n_written => results_n_written
       procedure :: add_point_field
       procedure :: add_control_array
+      procedure :: add_history_value
       procedure, private :: add_contact_real_1, add_contact_real_2, add_contact_integer_1
       generic :: add_contact_array => add_contact_real_1, add_contact_real_2, add_contact_integer_1
    end type hdf5_results_t
@@ -103,7 +105,8 @@ contains
       if (allocated(self%contact)) deallocate (self%contact)
       if (allocated(self%fields)) deallocate (self%fields)
       if (allocated(self%control)) deallocate (self%control)
-      allocate (self%contact(0), self%fields(0), self%control(0))
+      if (allocated(self%history_columns)) deallocate (self%history_columns)
+      allocate (self%contact(0), self%fields(0), self%control(0), self%history_columns(0))
 
       call write_header(self%file, mesh, title, deck_path, version, error)
       if (.not. allocated(error)) call flush_file(self%file, error)
@@ -283,6 +286,15 @@ contains
       call append_reals(self%control, name, values, size(values, 1) == 1)
    end subroutine add_control_array
 
+   !> Add the value of a history column (RESULTS HISTORY, named by its CSV label) to the
+   !> `history_columns` group of the next increment; h5py shape (1).
+   subroutine add_history_value(self, name, value)
+      class(hdf5_results_t), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: value
+      call append_reals(self%history_columns, name, reshape([value], [1, 1]), .true.)
+   end subroutine add_history_value
+
    !> A real array values(n_components, n) named `name` at the end of `items` (written as a
    !> 1-D dataset when `rank_one`).
    subroutine append_reals(items, name, values, rank_one)
@@ -371,8 +383,8 @@ contains
       call close_group_after(increments, error)
       if (allocated(error)) return
       self%n_increments = self%n_increments + 1
-      deallocate (self%contact, self%fields, self%control)
-      allocate (self%contact(0), self%fields(0), self%control(0))
+      deallocate (self%contact, self%fields, self%control, self%history_columns)
+      allocate (self%contact(0), self%fields(0), self%control(0), self%history_columns(0))
       call flush_file(self%file, error)
    end subroutine results_write_increment
 
@@ -396,6 +408,9 @@ contains
       end do
       do i = 1, size(self%control)
          bytes = bytes + item_bytes(self%control(i))
+      end do
+      do i = 1, size(self%history_columns)
+         bytes = bytes + item_bytes(self%history_columns(i))
       end do
    end function increment_bytes
 
@@ -423,6 +438,10 @@ contains
       if (allocated(error)) return
       do i = 1, size(self%contact)
          call check_object_name(self%contact(i)%name, 'contact array', error)
+         if (allocated(error)) return
+      end do
+      do i = 1, size(self%history_columns)
+         call check_object_name(self%history_columns(i)%name, 'history column', error)
          if (allocated(error)) return
       end do
       do i = 1, size(self%fields)
@@ -476,6 +495,8 @@ contains
       call write_named_arrays(group, 'fields', self%fields, error)
       if (allocated(error)) return
       call write_named_arrays(group, 'control', self%control, error)
+      if (allocated(error)) return
+      call write_named_arrays(group, 'history_columns', self%history_columns, error)
       if (allocated(error)) return
       ! written last: readers ignore a group without it (a run stopped while writing it)
       call write_attribute(group, 'complete', 1, error)
