@@ -229,3 +229,9 @@ add_test(NAME io_totals_contact_plane
                  "cn_pair1=10*min(t,1)@1e-9")
 set_tests_properties(io_totals_bar io_totals_contact io_totals_contact_mortar io_totals_contact_plane
                      PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# A reader holding the HDF5 file open while frix runs: frix waits for it, or gives up with a
+# clear error after FRIX_HDF5_LOCK_WAIT seconds; the file stays whole (docs/output.md).
+add_test(NAME hdf5_reader_during_run
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/reader_during_run_test.py ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/reader_during_run.dck)
+set_tests_properties(hdf5_reader_during_run PROPERTIES LABELS regression TIMEOUT ${scaled_60})
