@@ -1,7 +1,7 @@
 !> The result files of a run, written after every converged increment (so a run that stops
 !> keeps everything converged): the fixed-column listing `<base>_listing.txt`, the ParaView
 !> series `<base>.pvd` + `<base>_<step>_<increment>.vtu`, and the CSV history
-!> `<base>_history.csv` of the requested node DOFs, and on request the POS3D neutral file
+!> `<base>_history.csv` of the RESULTS HISTORY columns, and on request the POS3D neutral file
 !> `<base>.pos` and the HDF5 results/restart file `<base>.h5`. See docs/output.md.
 module frix_results_output
    use frix_kinds, only: dp
