@@ -47,7 +47,7 @@ contains
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: base   !! path prefix of every result file
       type(error_t), allocatable, intent(out) :: error
-      integer :: slash, status, i
+      integer :: slash, status
       slash = index(base, '/', back=.true.)
       if (slash > 1) then
          call execute_command_line('mkdir -p "'//base(:slash - 1)//'" 2> /dev/null', exitstat=status)
