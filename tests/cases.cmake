@@ -222,3 +222,31 @@ set_tests_properties(restart_join_series PROPERTIES LABELS "regression;contact")
 # (exit 77) where ParaView is not installed.
 add_test(NAME paraview_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/postproc/paraview_test.sh ${FRIX_BIN})
 set_tests_properties(paraview_render PROPERTIES LABELS "paraview;postproc" SKIP_RETURN_CODE 77 TIMEOUT ${scaled_60})
+# History totals (RESULTS HISTORY ... SUM / MEAN, HISTORY CONTACT) in the CSV history, the
+# listing's TOTALS blocks and the HDF5 file, against closed forms (tests/io/check_totals.py;
+# the references are derived in each deck's title).
+set(totals ${CMAKE_CURRENT_SOURCE_DIR}/io)
+add_test(NAME io_totals_bar
+         COMMAND bash ${totals}/run_totals.sh ${FRIX_BIN} ${totals}/totals_bar.dck
+                 "r3_sum_bar_zmax=5*t" "r3_sum_bar_zmin=-5*t" "u3_mean_bar_zmax=0.01*t" "u1_mean_bar_xmax=-1.5e-3*t")
+# contact resultants: the residual tolerance is 1e-10 of the loads, hence 1e-9; cn_pair1 differs
+# from the normal load by the tilt of the deformable master (9e-6 measured, 1e-4 allowed)
+foreach(variant contact contact_mortar)
+  add_test(NAME io_totals_${variant}
+           COMMAND bash ${totals}/run_totals.sh ${FRIX_BIN} ${totals}/totals_${variant}.dck
+                   "c1_pair1=-0.9*max(t-1,0)@1e-9" "c2_pair1=0@1e-9" "c3_pair1=10*min(t,1)@1e-9"
+                   "cn_pair1=10*min(t,1)@1e-4" "r1_sum_block_zmin=-0.9*max(t-1,0)@1e-9"
+                   "r3_sum_block_zmin=10*min(t,1)@1e-9")
+endforeach()
+add_test(NAME io_totals_contact_plane
+         COMMAND bash ${totals}/run_totals.sh ${FRIX_BIN} ${totals}/totals_contact_plane.dck
+                 "c1_pair1=-0.9*max(t-1,0)@1e-9" "c2_pair1=0@1e-9" "c3_pair1=10*min(t,1)@1e-9"
+                 "cn_pair1=10*min(t,1)@1e-9")
+set_tests_properties(io_totals_bar io_totals_contact io_totals_contact_mortar io_totals_contact_plane
+                     PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# A reader holding the HDF5 file open while frix runs: frix waits for it, or gives up with a
+# clear error after FRIX_HDF5_LOCK_WAIT seconds; the file stays whole (docs/output.md).
+add_test(NAME hdf5_reader_during_run
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/reader_during_run_test.py ${FRIX_BIN}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/reader_during_run.dck)
+set_tests_properties(hdf5_reader_during_run PROPERTIES LABELS regression TIMEOUT ${scaled_60})

@@ -54,6 +54,10 @@ module frix_increment_results
       !> no step has taken one (then `displacement` is the total)
       real(dp), allocatable :: reference_displacement(:, :)
       real(dp), allocatable :: reaction(:, :)       !! (3, n_nodes), zero on free equations
+      !> one value per RESULTS HISTORY request (model%results%history, docs/output.md): a node's
+      !> displacement or reaction component, their sum or mean over a node set, a contact pair's
+      !> resultant force
+      real(dp), allocatable :: history_values(:)
       logical, allocatable :: constrained(:, :)     !! (3, n_nodes) equations with a Dirichlet condition
       !> integration points whose law flags them as yielding in this increment (history
       !> variable YIELDED = 1); -1 when no material of the model has such a variable

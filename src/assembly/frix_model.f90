@@ -99,10 +99,17 @@ module frix_model
    end type solver_controls_t
 
    !> One column of the CSV history: displacement ('U') or reaction ('R') of a node's DOF.
+   !> A column of the CSV history (RESULTS HISTORY, docs/deck-format.md): one node's DOF, a
+   !> total over a node set, or the resultant of a contact pair's forces.
    type :: history_request_t
-      integer :: node = 0                 !! internal node number
-      integer :: component = 0
-      character(len=1) :: kind = 'U'
+      integer :: node = 0                 !! internal node number (one node)
+      integer :: component = 0            !! 1..3; 0: a contact pair's NORMAL force
+      character(len=1) :: kind = 'U'      !! U displacement, R reaction, C contact
+      !> '' one node; 'SUM' (reactions) or 'MEAN' (displacements) over `nodes`
+      character(len=4) :: reduction = ''
+      integer, allocatable :: nodes(:)    !! SUM, MEAN: the set's internal node numbers
+      character(len=:), allocatable :: set_name   !! SUM, MEAN: the set's name
+      integer :: pair = 0                 !! C: index into model%contact_pairs
    end type history_request_t
 
    type :: results_request_t

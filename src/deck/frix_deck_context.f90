@@ -14,7 +14,7 @@ module frix_deck_context
    private
 
    public :: deck_reader_t, property_t, deck_section_names, box_tolerance, read_keyword_pairs, keyword_pair_t
-   public :: require, read_node_dof, mark_nodes, extend_origins, extend_properties, one_line, line_integer
+   public :: require, read_node_dof, read_dof, mark_nodes, extend_origins, extend_properties, one_line, line_integer
    public :: s_problem, s_static, s_curves, s_materials, s_mesh_file, s_node_coords, s_elements, &
              s_mesh_block, s_node_sets, s_surfaces, s_dirichlet, s_neumann, s_body_force, s_steps, &
              s_results, s_contact, s_end

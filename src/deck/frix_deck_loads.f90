@@ -5,10 +5,17 @@ module frix_deck_loads
    use frix_mesh, only: hex8_face_nodes
    use frix_model, only: model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t
    use frix_deck_context, only: deck_reader_t, require, mark_nodes, s_dirichlet, s_neumann, s_body_force
+   use frix_strings, only: to_string
    implicit none
    private
 
    public :: read_dirichlet, read_neumann, read_body_forces
+
+   !> Where a DIRICHLET record was read: the reader's line index and the token of its value.
+   type :: dirichlet_origin_t
+      integer :: line = 0
+      integer :: value_token = 0
+   end type dirichlet_origin_t
 
 contains
 
@@ -17,11 +24,12 @@ contains
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
       type(dirichlet_t) :: record
+      type(dirichlet_origin_t), allocatable :: origins(:)
       integer, allocatable :: nodes(:)
-      integer :: i, k, position, flags(3), curves(3), flag_position
+      integer :: i, k, position, flags(3), curves(3), flag_position, value_position
       real(dp) :: values(3)
       logical :: ok
-      allocate (model%dirichlet(0))
+      allocate (model%dirichlet(0), origins(0))
       i = 0
       do while (reader%next_line(s_dirichlet, i, position, ok))
          associate (line => reader%lines(i))
@@ -35,6 +43,7 @@ contains
             end do
             call require(reader, ok, any(flags == 1), line, flag_position, 'no DOF flagged (all flags 0)')
             call reader%expect_keyword(line, position, 'VAL', ok)
+            value_position = position
             call reader%take_reals(line, position, 'a prescribed value', values, ok)
             curves = 0
             if (ok .and. position <= line%n_tokens()) then
@@ -53,11 +62,66 @@ contains
                record%curve = curves(k)
                record%line = line%number
                model%dirichlet = [model%dirichlet, record]
+               origins = [origins, dirichlet_origin_t(i, value_position + k - 1)]
             end do
             call mark_nodes(reader, nodes, i)
          end associate
       end do
+      call check_dirichlet_conflicts(reader, model, origins)
    end subroutine read_dirichlet
+
+   !> A DOF prescribed by two lines (directly or through node sets, MESH BLOCK or gmsh sets)
+   !> must get the same value and curve from both; a value 0 holds the DOF fixed whatever the
+   !> curve. Otherwise the later line is reported, naming the node, the DOF and the earlier
+   !> line (once per line and DOF).
+   subroutine check_dirichlet_conflicts(reader, model, origins)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(dirichlet_origin_t), intent(in) :: origins(:)   !! of each model%dirichlet record
+      integer, allocatable :: owner(:, :)   !! (3, n_nodes) the first record prescribing a DOF
+      integer :: r, q, j, node
+      allocate (owner(3, model%mesh%n_nodes), source=0)
+      do r = 1, size(model%dirichlet)
+         associate (record => model%dirichlet(r))
+            do j = 1, size(record%nodes)
+               node = record%nodes(j)
+               q = owner(record%component, node)
+               if (q == 0) then
+                  owner(record%component, node) = r
+               else if (.not. same_prescription(model%dirichlet(q), record)) then
+                  call report_conflict(reader, model, origins(q), origins(r), q, r, node)
+                  exit
+               end if
+            end do
+         end associate
+      end do
+   end subroutine check_dirichlet_conflicts
+
+   pure logical function same_prescription(a, b)
+      type(dirichlet_t), intent(in) :: a, b
+      same_prescription = (a%value == b%value .and. a%curve == b%curve) .or. (a%value == 0.0_dp .and. b%value == 0.0_dp)
+   end function same_prescription
+
+   !> `conflicting prescribed values for DOF <k> of node <id>` at the later line's value, with
+   !> the earlier line's location and value (and whether its load curve differs).
+   subroutine report_conflict(reader, model, first, later, q, r, node)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(dirichlet_origin_t), intent(in) :: first, later
+      integer, intent(in) :: q, r      !! the earlier and the later record
+      integer, intent(in) :: node
+      character(len=:), allocatable :: curves
+      curves = ''
+      if (model%dirichlet(q)%curve /= model%dirichlet(r)%curve) curves = ' and another load curve'
+      associate (first_line => reader%lines(first%line), later_line => reader%lines(later%line))
+         call reader%report(later_line, later%value_token, 'conflicting prescribed values for DOF '// &
+                            to_string(model%dirichlet(r)%component)//' of node '// &
+                            to_string(model%mesh%node_ids(node))//': '//reader%diagnostics%path//':'// &
+                            to_string(first_line%number)//' prescribes it with value '// &
+                            first_line%token(first%value_token)//curves, &
+                            note='    (a DOF takes one value and load curve: lines may repeat it, not change it)')
+      end associate
+   end subroutine report_conflict
 
    !> `SET <name>|NODE <id> FORCE fx fy fz [CURVE c]` or `SURF <name> PRESSURE p [CURVE c]
    !> [FOLLOWER]`.

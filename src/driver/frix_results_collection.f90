@@ -11,7 +11,7 @@ module frix_results_collection
    use frix_strings, only: to_string, to_lower
    use frix_finite_check, only: first_non_finite
    use frix_field_recovery, only: cell_average, nodal_extrapolated, von_mises_field
-   use frix_model, only: model_t
+   use frix_model, only: model_t, history_request_t
    use frix_analysis_state, only: analysis_state_t, reported_displacement
    use frix_newton_solver, only: newton_context_t
    use frix_newton_report, only: newton_report_t
@@ -64,12 +64,84 @@ contains
          call collect_contact(model, state, results, error)
          if (allocated(error)) return
       end if
+      call collect_history_values(model, state, results)
 
       last_of_step = abs(state%time - real(step, dp)) < 1.0e-12_dp
       results%full = mod(increment, max(1, model%results%every)) == 0 .or. last_of_step
       results%has_fields = results%full .and. (model%results%vtk .or. model%results%pos3d .or. model%results%hdf5)
       if (results%has_fields) call collect_fields(model, state, results, error)
    end subroutine collect_results
+
+   !> The value of each RESULTS HISTORY request (docs/output.md): a node's displacement or
+   !> reaction component, their sum (reactions) or mean (displacements) over a node set, or a
+   !> contact pair's resultant (contact_resultant).
+   subroutine collect_history_values(model, state, results)
+      type(model_t), intent(in) :: model
+      type(analysis_state_t), intent(in) :: state
+      type(increment_results_t), intent(inout) :: results
+      integer :: r
+      if (.not. allocated(model%results%history)) then
+         allocate (results%history_values(0))
+         return
+      end if
+      allocate (results%history_values(size(model%results%history)))
+      do r = 1, size(model%results%history)
+         associate (request => model%results%history(r))
+            select case (request%kind)
+            case ('C')
+               results%history_values(r) = contact_resultant(state, results, request%pair, request%component)
+            case ('R')
+               results%history_values(r) = nodal_value(request, results%reaction)
+            case default
+               results%history_values(r) = nodal_value(request, results%displacement)
+            end select
+         end associate
+      end do
+   end subroutine collect_history_values
+
+   !> Component `request%component` of a nodal field (3, n_nodes) at the request's node, or
+   !> summed or averaged over its set's nodes.
+   pure real(dp) function nodal_value(request, field) result(value)
+      type(history_request_t), intent(in) :: request
+      real(dp), intent(in) :: field(:, :)
+      select case (request%reduction)
+      case ('SUM')
+         value = sum(field(request%component, request%nodes))
+      case ('MEAN')
+         value = sum(field(request%component, request%nodes))/size(request%nodes)
+      case default
+         value = field(request%component, request%node)
+      end select
+   end function nodal_value
+
+   !> Resultant of the contact forces on the slave surface of contact pair `pair` (index into
+   !> model%contact_pairs), from its first pass: sum of f_i = A_i (p_i n_i + t_i) over the slave
+   !> nodes, A_i the node's tributary area, p_i its pressure (compressive positive), t_i its
+   !> tangential traction and n_i the unit normal out of the master body (the contact table,
+   !> contact_pass_table); with PASSES 2, p_i and t_i are the interface's (both passes'
+   !> forces on the node). Component 1..3 of the resultant, or 0: the normal force sum A_i p_i.
+   !> Statics: the resultant on the slave body balances the other loads on that body.
+   real(dp) function contact_resultant(state, results, pair, component) result(value)
+      type(analysis_state_t), intent(in) :: state
+      type(increment_results_t), intent(in) :: results
+      integer, intent(in) :: pair, component
+      integer :: p, i
+      value = 0.0_dp
+      if (.not. state%has_contact) return
+      do p = 1, size(state%contact%passes)
+         if (state%contact%passes(p)%pair == pair) exit
+      end do
+      if (p > size(state%contact%passes)) return
+      associate (pass => state%contact%passes(p), table => results%contact(p)%values)
+         do i = 1, size(pass%slave_nodes)
+            if (component == 0) then
+               value = value + pass%area(i)*table(2, i)
+            else
+               value = value + pass%area(i)*(table(2, i)*pass%result(i)%normal(component) + table(2 + component, i))
+            end if
+         end do
+      end associate
+   end function contact_resultant
 
    !> Stresses and strains at the integration points (one element pass), the materials'
    !> named history variables, and the committed state for restarts.

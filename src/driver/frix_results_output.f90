@@ -1,18 +1,18 @@
 !> The result files of a run, written after every converged increment (so a run that stops
 !> keeps everything converged): the fixed-column listing `<base>_listing.txt`, the ParaView
 !> series `<base>.pvd` + `<base>_<step>_<increment>.vtu`, and the CSV history
-!> `<base>_history.csv` of the requested node DOFs, and on request the POS3D neutral file
+!> `<base>_history.csv` of the RESULTS HISTORY columns, and on request the POS3D neutral file
 !> `<base>.pos` and the HDF5 results/restart file `<base>.h5`. See docs/output.md.
 module frix_results_output
    use frix_kinds, only: dp
    use frix_version_info, only: frix_version
    use frix_error, only: error_t, fatal_error
-   use frix_model, only: model_t
+   use frix_model, only: model_t, history_request_t
    use frix_increment_results, only: increment_results_t, contact_pass_results_t, named_field_t
    use frix_field_recovery, only: nodal_extrapolated, cell_average
    use frix_listing_writer, only: listing_t
    use frix_vtk_writer, only: vtk_series_t
-   use frix_history_writer, only: history_t
+   use frix_history_writer, only: history_t, history_label, set_history_label, contact_history_label
    use frix_pos3d_writer, only: pos3d_writer_t
    use frix_hdf5_results, only: hdf5_results_t
    use frix_text_output, only: text_file_t
@@ -47,7 +47,7 @@ contains
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: base   !! path prefix of every result file
       type(error_t), allocatable, intent(out) :: error
-      integer :: slash, status, i
+      integer :: slash, status
       slash = index(base, '/', back=.true.)
       if (slash > 1) then
          call execute_command_line('mkdir -p "'//base(:slash - 1)//'" 2> /dev/null', exitstat=status)
@@ -83,15 +83,45 @@ contains
       end if
       if (allocated(model%results%history)) then
          if (size(model%results%history) > 0) then
-            associate (requests => model%results%history)
-               call self%history%open(base, model%mesh, model%mesh%node_ids(requests%node), &
-                                      [(requests(i)%component + merge(3, 0, requests(i)%kind == 'R'), &
-                                        i=1, size(requests))], error)
-            end associate
+            call self%history%open(base, history_labels(model), error)
             if (allocated(error)) return
          end if
       end if
    end subroutine output_open
+
+   !> The column label of each RESULTS HISTORY request (frix_history_writer): `u3_n31`,
+   !> `r3_sum_<set>`, `u1_mean_<set>`, `c1_pair<id>`, `cn_pair<id>`.
+   function history_labels(model) result(labels)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: labels(:)
+      integer :: k, width
+      width = 1
+      do k = 1, size(model%results%history)
+         width = max(width, len(history_column_label(model, model%results%history(k))))
+      end do
+      allocate (character(len=width) :: labels(size(model%results%history)))
+      do k = 1, size(model%results%history)
+         labels(k) = history_column_label(model, model%results%history(k))
+      end do
+   end function history_labels
+
+   function history_column_label(model, request) result(label)
+      type(model_t), intent(in) :: model
+      type(history_request_t), intent(in) :: request
+      character(len=:), allocatable :: label
+      integer :: dof
+      dof = request%component + merge(3, 0, request%kind == 'R')
+      select case (request%kind)
+      case ('C')
+         label = contact_history_label(model%contact_pairs(request%pair)%id, request%component)
+      case default
+         if (request%reduction == '') then
+            label = history_label(model%mesh%node_ids(request%node), dof)
+         else
+            label = set_history_label(request%set_name, dof, to_lower(trim(request%reduction)))
+         end if
+      end select
+   end function history_column_label
 
    !> The listing's header: one comment line per contact pair with an automatic penalty
    !> (`# contact pair <id>: EPSN ...`, its penalty_note); none for pairs whose deck gives
@@ -120,8 +150,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       self%n_increments = self%n_increments + 1
       if (self%history%is_open()) then
-         call self%history%append(results%step, results%increment, results%time, results%displacement, &
-                                  results%reaction, error)
+         call self%history%append(results%step, results%increment, results%time, results%history_values, error)
          if (allocated(error)) return
       end if
       if (results%has_contact) then
@@ -138,7 +167,7 @@ contains
          if (allocated(error)) return
       end if
       if (self%hdf5_open) then
-         call write_hdf5(self, results, error)
+         call write_hdf5(self, model, results, error)
          if (allocated(error)) return
       end if
       if (model%results%pos3d) call write_pos3d(self, model, results, error)
@@ -163,6 +192,8 @@ contains
       call self%listing%write_displacements(model%mesh, results%displacement, error)
       if (allocated(error)) return
       call self%listing%write_reactions(model%mesh, results%reaction, results%constrained, error)
+      if (allocated(error)) return
+      call write_listing_totals(self, model, results, error)
       if (allocated(error) .or. .not. results%has_contact) return
       ! one block per contact pass: `CONTACT PAIR <id> PASS <p>`, a row per slave node
       do p = 1, size(results%contact)
@@ -176,6 +207,22 @@ contains
          if (allocated(error)) return
       end do
    end subroutine write_listing
+
+   !> The listing's `TOTALS` block: the history columns that are totals (SUM and MEAN over a
+   !> set, contact resultants); none without such columns, whose listings stay as they were.
+   subroutine write_listing_totals(self, model, results, error)
+      class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(increment_results_t), intent(in) :: results
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: total(:)
+      character(len=:), allocatable :: labels(:)
+      if (.not. allocated(model%results%history)) return
+      total = model%results%history%reduction /= '' .or. model%results%history%kind == 'C'
+      if (.not. any(total)) return
+      labels = history_labels(model)
+      call self%listing%write_totals(labels, results%history_values, total, error)
+   end subroutine write_listing_totals
 
    !> An augmented pass's committed multipliers: `CONTACT MULTIPLIERS PAIR <id> PASS <p>`, a row
    !> per slave node: LAMBDA (normal, force/area) and, with augmented friction, LAMBDA_T_X Y Z.
@@ -244,8 +291,9 @@ contains
       call cell_average(gp, cell)
    end subroutine recovered_field
 
-   subroutine write_hdf5(self, results, error)
+   subroutine write_hdf5(self, model, results, error)
       class(results_output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
       type(increment_results_t), intent(in) :: results
       type(error_t), allocatable, intent(out) :: error
       integer :: p, f
@@ -281,6 +329,12 @@ contains
       do f = 1, size(results%point_fields)
          call self%hdf5%add_point_field(to_lower(results%point_fields(f)%name), results%point_fields(f)%values)
       end do
+      if (allocated(model%results%history)) then
+         do f = 1, size(model%results%history)
+            call self%hdf5%add_history_value(history_column_label(model, model%results%history(f)), &
+                                             results%history_values(f))
+         end do
+      end if
       if (allocated(results%reference_displacement)) then
          call self%hdf5%write_increment(results%step, results%increment, results%time, results%displacement, &
                                         results%reaction, results%stress, results%strain, results%alpha, &

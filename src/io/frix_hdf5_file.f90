@@ -1,23 +1,28 @@
 !> The HDF5 results file as a whole (docs/hdf5-layout.md), shared by its writer
 !> (frix_hdf5_results) and its readers (frix_hdf5_restart): creating, opening read-only,
-!> flushing and closing it with checked HDF5 1.10 calls, the layout version, and the names of
-!> the increment groups (/increments/000001, 000002, ...).
+!> reopening for an increment, flushing and closing it with checked HDF5 1.10 calls, the
+!> layout version, and the names of the increment groups (/increments/000001, 000002, ...).
 module frix_hdf5_file
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_long_long, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_long_long, c_null_char, c_double
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_text_output, only: system_reason
-   use frix_strings, only: zero_padded
+   use frix_strings, only: zero_padded, to_string
    use frix_hdf5_support, only: hdf5_location_t, hdf5_initialize, hdf5_finalize, note_failed_close
    use hdf5, only: h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5fis_hdf5_f, &
-                   h5f_acc_trunc_f, h5f_acc_rdonly_f, h5f_scope_global_f
+                   h5f_acc_trunc_f, h5f_acc_rdonly_f, h5f_acc_rdwr_f, h5f_scope_global_f
    implicit none
    private
 
    public :: hdf5_layout_version, increment_group_name
-   public :: create_file, open_for_reading, flush_file, close_file, hdf5_finalize, check_room
+   public :: create_file, open_for_reading, open_for_writing, flush_file, close_file, hdf5_finalize, check_room
 
    integer, parameter :: hdf5_layout_version = 1   !! root attribute `layout_version`; bump on incompatible change
    integer, parameter :: increment_digits = 6       !! increment group names: 000001, 000002, ...
+   !> seconds the writer waits for a reader to close the file (FRIX_HDF5_LOCK_WAIT overrides)
+   real(dp), parameter :: default_lock_wait = 60.0_dp
+   real(dp), parameter :: retry_interval = 0.1_dp   !! seconds between two attempts
 
    interface
       !> 0 when the file at `path` can grow by `bytes`, else the errno (frix_disk_space.c).
@@ -26,6 +31,12 @@ module frix_hdf5_file
          character(kind=c_char), intent(in) :: path(*)
          integer(c_long_long), value :: bytes
       end function c_room_to_grow
+
+      !> Pause for `seconds` (frix_pause.c).
+      subroutine c_pause(seconds) bind(c, name='frix_pause_c')
+         import :: c_double
+         real(c_double), value :: seconds
+      end subroutine c_pause
    end interface
 
 contains
@@ -83,12 +94,59 @@ contains
       call name_file(path, status, 'open', file, error)
    end subroutine open_for_reading
 
+   !> Reopen the results file `path` for writing (frix_hdf5_results closes it after every
+   !> increment, so that readers can open it between increments). HDF5 locks an open file
+   !> (since 1.10): while a reader holds it open, the opening fails; it is tried again every
+   !> 0.1 s, with one note on standard output, for up to 60 s (or the seconds of the
+   !> environment variable FRIX_HDF5_LOCK_WAIT), then the error names the file and the cause.
+   subroutine open_for_writing(path, file, error)
+      character(len=*), intent(in) :: path
+      type(hdf5_location_t), intent(inout) :: file
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: waited, limit
+      integer :: status
+      waited = 0.0_dp
+      limit = lock_wait()
+      do
+         call h5fopen_f(path, h5f_acc_rdwr_f, file%id, status)
+         if (status == 0 .or. waited >= limit) exit
+         if (waited == 0.0_dp) then
+            write (output_unit, '(a)') 'frix: waiting for "'//path//'": another process holds it open '// &
+               '(HDF5 file locking); retrying for up to '//to_string(nint(limit))//' s'
+            flush (output_unit)
+         end if
+         call c_pause(real(retry_interval, c_double))
+         waited = waited + retry_interval
+      end do
+      if (status /= 0) then
+         file%id = -1
+         call fatal_error(error, 'HDF5: cannot reopen results file "'//path//'" to write an increment: '// &
+                          'another process holds it open (a reader must close it between increments, '// &
+                          'docs/output.md) or it is no longer writable')
+         return
+      end if
+      call name_file(path, status, 'reopen', file, error)
+   end subroutine open_for_writing
+
+   !> Seconds to wait for a reader to close the file: FRIX_HDF5_LOCK_WAIT if it is a number
+   !> in [0, 1e6], else default_lock_wait.
+   real(dp) function lock_wait()
+      character(len=32) :: text
+      integer :: length, status, io
+      real(dp) :: value
+      lock_wait = default_lock_wait
+      call get_environment_variable('FRIX_HDF5_LOCK_WAIT', text, length, status)
+      if (status /= 0 .or. length == 0) return
+      read (text, *, iostat=io) value
+      if (io == 0 .and. value >= 0.0_dp .and. value <= 1.0e6_dp) lock_wait = value
+   end function lock_wait
+
    !> After h5fcreate_f or h5fopen_f returned `status`: the error "cannot <action> ..." on
    !> failure (the file is then not open), otherwise the names of `file` for messages.
    subroutine name_file(path, status, action, file, error)
       character(len=*), intent(in) :: path
       integer, intent(in) :: status
-      character(len=*), intent(in) :: action   !! 'create' or 'open'
+      character(len=*), intent(in) :: action   !! 'create', 'open' or 'reopen'
       type(hdf5_location_t), intent(inout) :: file
       type(error_t), allocatable, intent(out) :: error
       if (status /= 0) then

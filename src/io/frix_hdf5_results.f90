@@ -15,9 +15,11 @@
 !>       stress / strain with engineering shears, frix Voigt order xx yy zz xy xz yz;
 !>       alpha (n_elements, max_eas); history (n_elements, n_points, n_state);
 !>       optional group contact/ with the caller's named arrays.
-!> The file is flushed (H5Fflush, global scope) after every increment so that a run that stops
-!> keeps the converged increments. A group without the `complete` attribute (a run stopped
-!> while writing it) is ignored by the readers.
+!> The file is flushed (H5Fflush, global scope) and closed after the header and after every
+!> increment, and reopened for the next one: a run that stops keeps the converged increments,
+!> and other processes can open the file (read-only) between increments; while one holds it
+!> open the writer waits for it (frix_hdf5_file's open_for_writing). A group without the
+!> `complete` attribute (a run stopped while writing it) is ignored by the readers.
 !>
 !> Restart: `read_restart` returns time, displacements, EAS parameters and material history of
 !> one increment after checking them against the current model's array shapes. A restarted run
@@ -34,8 +36,8 @@ module frix_hdf5_results
    use frix_mesh, only: mesh_t
    use frix_hdf5_support, only: hdf5_location_t, create_group, open_group, close_group, close_group_after, &
                                 write_dataset, write_attribute
-   use frix_hdf5_file, only: hdf5_layout_version, increment_group_name, create_file, flush_file, close_file, &
-                             check_room
+   use frix_hdf5_file, only: hdf5_layout_version, increment_group_name, create_file, open_for_writing, flush_file, &
+                             close_file, check_room
    use frix_hdf5_restart, only: read_restart, list_increments, read_increment_array
    implicit none
    private
@@ -59,9 +61,11 @@ module frix_hdf5_results
       integer :: n_nodes = 0
       integer :: n_elements = 0
       integer :: n_increments = 0                 !! increment groups written so far
+      logical :: created = .false.                !! the file exists with its header (closed between writes)
       type(named_array_t), allocatable :: contact(:)
       type(named_array_t), allocatable :: fields(:)   !! named integration-point fields
       type(named_array_t), allocatable :: control(:)  !! the increment control, for restarts
+      type(named_array_t), allocatable :: history_columns(:)   !! the history's values, one each
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
@@ -69,6 +73,7 @@ module frix_hdf5_results
       procedure :: n_written => results_n_written
       procedure :: add_point_field
       procedure :: add_control_array
+      procedure :: add_history_value
       procedure, private :: add_contact_real_1, add_contact_real_2, add_contact_integer_1
       generic :: add_contact_array => add_contact_real_1, add_contact_real_2, add_contact_integer_1
    end type hdf5_results_t
@@ -85,7 +90,7 @@ contains
       character(len=*), intent(in) :: version     !! frix version, e.g. '0.1.0'
       type(error_t), allocatable, intent(out) :: error
 
-      if (self%file%id >= 0) then
+      if (self%created) then
          call fatal_error(error, 'HDF5: results file "'//self%file%file_path//'" is already open, cannot create "'// &
                           path//'"')
          return
@@ -103,11 +108,13 @@ contains
       if (allocated(self%contact)) deallocate (self%contact)
       if (allocated(self%fields)) deallocate (self%fields)
       if (allocated(self%control)) deallocate (self%control)
-      allocate (self%contact(0), self%fields(0), self%control(0))
+      if (allocated(self%history_columns)) deallocate (self%history_columns)
+      allocate (self%contact(0), self%fields(0), self%control(0), self%history_columns(0))
 
       call write_header(self%file, mesh, title, deck_path, version, error)
       if (.not. allocated(error)) call flush_file(self%file, error)
-      if (allocated(error)) call close_file(self%file, error)   ! keeps the first error
+      call close_file(self%file, error)   ! keeps the first error
+      self%created = .not. allocated(error)
    end subroutine results_create
 
    subroutine write_header(file, mesh, title, deck_path, version, error)
@@ -283,6 +290,15 @@ contains
       call append_reals(self%control, name, values, size(values, 1) == 1)
    end subroutine add_control_array
 
+   !> Add the value of a history column (RESULTS HISTORY, named by its CSV label) to the
+   !> `history_columns` group of the next increment; h5py shape (1).
+   subroutine add_history_value(self, name, value)
+      class(hdf5_results_t), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: value
+      call append_reals(self%history_columns, name, reshape([value], [1, 1]), .true.)
+   end subroutine add_history_value
+
    !> A real array values(n_components, n) named `name` at the end of `items` (written as a
    !> 1-D dataset when `rank_one`).
    subroutine append_reals(items, name, values, rank_one)
@@ -339,7 +355,7 @@ contains
       real(dp), intent(in), optional :: total(:, :), reference(:, :)
       type(hdf5_location_t) :: increments, group
 
-      if (self%file%id < 0) then
+      if (.not. self%created) then
          call fatal_error(error, 'HDF5 output: increment written before the results file was created')
          return
       end if
@@ -360,8 +376,13 @@ contains
       call check_room(self%file, increment_bytes(self, displacement, stress, alpha, history, present(total)), &
                       'increment '//to_string(self%n_increments + 1), error)
       if (allocated(error)) return
-      call open_group(self%file, 'increments', increments, error)
+      call open_for_writing(self%file%file_path, self%file, error)
       if (allocated(error)) return
+      call open_group(self%file, 'increments', increments, error)
+      if (allocated(error)) then
+         call close_file(self%file, error)
+         return
+      end if
       call create_group(increments, increment_group_name(self%n_increments + 1), group, error)
       if (.not. allocated(error)) then
          call write_increment_group(self, group, step, increment, time, displacement, reaction, stress, strain, &
@@ -369,11 +390,13 @@ contains
          call close_group_after(group, error)
       end if
       call close_group_after(increments, error)
-      if (allocated(error)) return
-      self%n_increments = self%n_increments + 1
-      deallocate (self%contact, self%fields, self%control)
-      allocate (self%contact(0), self%fields(0), self%control(0))
-      call flush_file(self%file, error)
+      if (.not. allocated(error)) then
+         self%n_increments = self%n_increments + 1
+         deallocate (self%contact, self%fields, self%control, self%history_columns)
+         allocate (self%contact(0), self%fields(0), self%control(0), self%history_columns(0))
+         call flush_file(self%file, error)
+      end if
+      call close_file(self%file, error)   ! keeps the first error
    end subroutine results_write_increment
 
    !> Bytes an increment adds to the file: its arrays and 64 KiB for HDF5's object headers,
@@ -396,6 +419,9 @@ contains
       end do
       do i = 1, size(self%control)
          bytes = bytes + item_bytes(self%control(i))
+      end do
+      do i = 1, size(self%history_columns)
+         bytes = bytes + item_bytes(self%history_columns(i))
       end do
    end function increment_bytes
 
@@ -423,6 +449,10 @@ contains
       if (allocated(error)) return
       do i = 1, size(self%contact)
          call check_object_name(self%contact(i)%name, 'contact array', error)
+         if (allocated(error)) return
+      end do
+      do i = 1, size(self%history_columns)
+         call check_object_name(self%history_columns(i)%name, 'history column', error)
          if (allocated(error)) return
       end do
       do i = 1, size(self%fields)
@@ -477,6 +507,8 @@ contains
       if (allocated(error)) return
       call write_named_arrays(group, 'control', self%control, error)
       if (allocated(error)) return
+      call write_named_arrays(group, 'history_columns', self%history_columns, error)
+      if (allocated(error)) return
       ! written last: readers ignore a group without it (a run stopped while writing it)
       call write_attribute(group, 'complete', 1, error)
    end subroutine write_increment_group
@@ -509,10 +541,11 @@ contains
       call close_group_after(group, error)
    end subroutine write_named_arrays
 
-   !> Close the file (no-op if it is not open).
+   !> Close the file if it is open (it is closed between increments) and end the writing.
    subroutine results_close(self, error)
       class(hdf5_results_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
       call close_file(self%file, error)
+      self%created = .false.
    end subroutine results_close
 end module frix_hdf5_results

@@ -40,6 +40,7 @@ module frix_listing_writer
       procedure :: write_displacements
       procedure :: write_reactions
       procedure :: write_table
+      procedure :: write_totals
    end type listing_t
 
 contains
@@ -147,6 +148,32 @@ contains
       call write_lines(self, [character(len=10 + 18*size(labels)) :: 'SUM OF REACTIONS', header_line('', labels), &
                               total//values_text(sum(reaction, dim=2))], error)
    end subroutine write_reactions
+
+   !> `TOTALS` block: one row per written total of the history (a sum of reactions or mean of
+   !> displacements over a node set, a contact pair's resultant), its label right-aligned in 27
+   !> characters after a blank (longer labels widen the row), then its value `es18.9e3`.
+   subroutine write_totals(self, labels, values, written, error)
+      class(listing_t), intent(inout) :: self
+      character(len=*), intent(in) :: labels(:)
+      real(dp), intent(in) :: values(:)   !! one per label
+      logical, intent(in) :: written(:)   !! per label: whether it is a total, written here
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: lines(:)
+      integer :: k, n, width
+      width = 1 + 27 + 18
+      do k = 1, size(labels)
+         width = max(width, 1 + len_trim(labels(k)) + 18)
+      end do
+      allocate (character(len=width) :: lines(count(written) + 1))
+      lines(1) = 'TOTALS'
+      n = 1
+      do k = 1, size(labels)
+         if (.not. written(k)) cycle
+         n = n + 1
+         lines(n) = ' '//padded(trim(labels(k)), 27)//values_text(values(k:k))
+      end do
+      call write_lines(self, lines, error)
+   end subroutine write_totals
 
    !> A generic block: title line, header line (`key_label`, `labels`), and one row per key:
    !> `(i10, n(es18.9e3))` with values(n_labels, n_keys). Labels longer than
