@@ -210,3 +210,10 @@ set_tests_properties(hdf5_disk_full PROPERTIES LABELS regression SKIP_RETURN_COD
 
 # The Abaqus/CalculiX .inp mesh reader.
 include(${CMAKE_CURRENT_SOURCE_DIR}/inp/inp.cmake)
+# The pipe-in-soil tutorial's deck (docs/tutorial-pipe-in-soil.md) on its committed gmsh mesh:
+# it converges, and the pull on the pipe's ends balances the soil's supports.
+set(pipe_in_soil ${PROJECT_SOURCE_DIR}/inputs/examples/pipe_in_soil)
+add_test(NAME tutorial_pipe_in_soil
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/inp/run_inp_case.sh ${FRIX_BIN}
+                 ${pipe_in_soil}/check_pipe_in_soil.py ${pipe_in_soil}/pipe_in_soil.dck)
+set_tests_properties(tutorial_pipe_in_soil PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
