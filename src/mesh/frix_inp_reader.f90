@@ -271,7 +271,10 @@ contains
          mesh%element_ids = data%element_ids%items(1:mesh%n_elements)
       end if
       allocate (mesh%element_block(mesh%n_elements), source=0)
-      n_node_sets = count(data%sets(1:data%n_sets)%kind == node_kind)
+      n_node_sets = 0
+      do k = 1, data%n_sets
+         if (data%sets(k)%kind == node_kind) n_node_sets = n_node_sets + 1
+      end do
       n_element_sets = data%n_sets - n_node_sets
       allocate (mesh%node_sets(n_node_sets), mesh%element_sets(n_element_sets), mesh%surfaces(data%n_surfaces))
       i_node = 0
