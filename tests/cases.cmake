@@ -250,3 +250,12 @@ add_test(NAME hdf5_reader_during_run
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/reader_during_run_test.py ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/reader_during_run.dck)
 set_tests_properties(hdf5_reader_during_run PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# The Abaqus/CalculiX .inp mesh reader.
+include(${CMAKE_CURRENT_SOURCE_DIR}/inp/inp.cmake)
+# The pipe-in-soil tutorial's deck (docs/tutorial-pipe-in-soil.md) on its committed gmsh mesh:
+# it converges, and the pull on the pipe's ends balances the soil's supports.
+set(pipe_in_soil ${PROJECT_SOURCE_DIR}/inputs/examples/pipe_in_soil)
+add_test(NAME tutorial_pipe_in_soil
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/inp/run_inp_case.sh ${FRIX_BIN}
+                 ${pipe_in_soil}/check_pipe_in_soil.py ${pipe_in_soil}/pipe_in_soil.dck)
+set_tests_properties(tutorial_pipe_in_soil PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})

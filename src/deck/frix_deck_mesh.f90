@@ -1,15 +1,16 @@
-!> The mesh of a deck: MESH FILE (gmsh), NODE COORDS, MESH BLOCK, then NODE SETS and SURFACES
+!> The mesh of a deck: MESH FILE (gmsh .msh, or Abaqus/CalculiX .inp), NODE COORDS, MESH BLOCK, then NODE SETS and SURFACES
 !> (docs/deck-format.md). The element lines of STRUCTURE ELEMENTS are read with the element
 !> properties (frix_deck_properties).
 module frix_deck_mesh
    use frix_kinds, only: dp
    use frix_error, only: error_t
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, to_lower
    use frix_mesh, only: mesh_t, node_set_t, surface_t
    use frix_id_map, only: id_map_t
    use frix_mesh_checks, only: merge_meshes, mesh_bounding_box
    use frix_mesh_selection, only: nodes_in_box, boundary_faces_in_box, sorted_unique
    use frix_gmsh_reader, only: read_gmsh
+   use frix_inp_reader, only: read_inp
    use frix_block_generator, only: generate_block
    use frix_model, only: model_t
    use frix_deck_tokens, only: deck_line_t
@@ -23,7 +24,8 @@ module frix_deck_mesh
 
 contains
 
-   !> `FILE <path>` (relative to the deck's directory): a gmsh mesh, the base of the mesh.
+   !> `FILE <path>` (relative to the deck's directory): the base of the mesh, an Abaqus/CalculiX
+   !> .inp file if the name ends in `.inp` (any case), else a gmsh mesh.
    subroutine read_mesh_file(reader, model)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
@@ -46,7 +48,11 @@ contains
             end if
             full_path = file
             if (file(1:1) /= '/') full_path = reader%directory//file
-            call read_gmsh(full_path, model%mesh, error)
+            if (is_inp_file(file)) then
+               call read_inp(full_path, model%mesh, error)
+            else
+               call read_gmsh(full_path, model%mesh, error)
+            end if
             if (allocated(error)) then
                call reader%report(line, 2, 'cannot read mesh file', note=error%message)
                reader%mesh_failed = .true.
@@ -59,6 +65,13 @@ contains
       end do
       if (n_files == 0) call empty_mesh(model%mesh)
    end subroutine read_mesh_file
+
+   !> True if `file` names an Abaqus/CalculiX input file (extension .inp, any case).
+   pure logical function is_inp_file(file)
+      character(len=*), intent(in) :: file
+      is_inp_file = .false.
+      if (len(file) > 4) is_inp_file = to_lower(file(len(file) - 3:)) == '.inp'
+   end function is_inp_file
 
    !> A mesh with no nodes and no elements, every array allocated.
    subroutine empty_mesh(mesh)

@@ -1,7 +1,8 @@
 !> A line-and-token scanner for plain-text input (gmsh msh files, input decks).
 !>
 !> The whole file is read into memory once (stream access), then walked line by line; tokens
-!> are separated by blanks (space, tab; a trailing carriage return of CRLF files is dropped).
+!> are separated by blanks (space, tab; a trailing carriage return of CRLF files is dropped),
+!> and by commas too where `commas_separate` is set (Abaqus/CalculiX .inp data lines).
 !> Numbers are parsed from the token text with `iostat` checks, so malformed input never
 !> raises a Fortran runtime error: every failure becomes an `error_t` whose message starts
 !> with `file:line:` (or `file:line:col:` for `fail_at_token`), e.g.
@@ -25,6 +26,7 @@ module frix_text_scanner
       integer :: line_number = 0                   !! current line, 0 before the first
       integer :: n_lines = 0                       !! number of lines of the text
       integer :: token_column = 0                  !! column of the last token scanned (0: none)
+      logical :: commas_separate = .false.         !! commas separate tokens as blanks do
       character(len=:), allocatable, private :: text
       integer, private :: next_start = 1           !! start of the next line in `text`
       integer, private :: line_first = 1           !! current line is text(line_first:line_last)
@@ -163,7 +165,7 @@ contains
       integer :: position
       position = self%cursor
       do while (position <= self%line_last)
-         if (.not. is_blank(self%text(position:position))) exit
+         if (.not. is_separator(self%text(position:position), self%commas_separate)) exit
          position = position + 1
       end do
       at_end_of_line = position > self%line_last
@@ -196,7 +198,7 @@ contains
       character(len=:), allocatable :: token
       integer :: cursor, first, last
       cursor = self%cursor
-      call scan_positions(self%text, cursor, self%line_last, first, last)
+      call scan_positions(self%text, cursor, self%line_last, self%commas_separate, first, last)
       token = self%text(first:last)
    end function peek_token
 
@@ -324,7 +326,7 @@ contains
       character(len=:), allocatable, intent(out) :: value
       type(error_t), allocatable, intent(out) :: error
       integer :: first, last, closing
-      call scan_positions(self%text, self%cursor, self%line_last, first, last)
+      call scan_positions(self%text, self%cursor, self%line_last, self%commas_separate, first, last)
       if (last < first) then
          value = ''
          call self%fail(error, 'expected a string, got end of line')
@@ -389,27 +391,34 @@ contains
    subroutine scan_token(self, first, last)
       type(text_scanner_t), intent(inout) :: self
       integer, intent(out) :: first, last
-      call scan_positions(self%text, self%cursor, self%line_last, first, last)
+      call scan_positions(self%text, self%cursor, self%line_last, self%commas_separate, first, last)
       if (last >= first) self%token_column = first - self%line_first + 1
    end subroutine scan_token
 
    !> Token text(first:last) starting at `cursor` (advanced past it); last < first if none.
-   pure subroutine scan_positions(text, cursor, line_last, first, last)
+   pure subroutine scan_positions(text, cursor, line_last, commas_separate, first, last)
       character(len=*), intent(in) :: text
       integer, intent(inout) :: cursor
       integer, intent(in) :: line_last
+      logical, intent(in) :: commas_separate
       integer, intent(out) :: first, last
       do while (cursor <= line_last)
-         if (.not. is_blank(text(cursor:cursor))) exit
+         if (.not. is_separator(text(cursor:cursor), commas_separate)) exit
          cursor = cursor + 1
       end do
       first = cursor
       do while (cursor <= line_last)
-         if (is_blank(text(cursor:cursor))) exit
+         if (is_separator(text(cursor:cursor), commas_separate)) exit
          cursor = cursor + 1
       end do
       last = cursor - 1
    end subroutine scan_positions
+
+   elemental logical function is_separator(character, commas_separate)
+      character(len=1), intent(in) :: character
+      logical, intent(in) :: commas_separate
+      is_separator = is_blank(character) .or. (commas_separate .and. character == ',')
+   end function is_separator
 
    elemental logical function is_blank(character)
       character(len=1), intent(in) :: character
