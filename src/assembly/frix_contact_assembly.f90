@@ -36,7 +36,7 @@ module frix_contact_assembly
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
    use frix_tie_pass, only: setup_tie
    use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass, commit_mortar_pass, restart_mortar_pass
-   use frix_tie_constraints, only: check_tie_nodes, tie_pattern_pairs
+   use frix_tie_constraints, only: check_tie_nodes
    use frix_strings, only: to_string
    use frix_friction_law, only: branch_free, branch_stick
    implicit none
@@ -46,7 +46,7 @@ module frix_contact_assembly
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
    public :: contact_history_rows, get_contact_history, set_contact_history, restart_mortar_rows
    public :: reset_friction_branches, release_inconsistent_branches
-   public :: check_ties
+   public :: check_ties, add_pattern_pairs
 
    type :: contact_system_t
       type(contact_pass_t), allocatable :: passes(:)
@@ -111,7 +111,10 @@ contains
          end associate
       end do
       system%unsymmetric = system%frictional .or. any(system%passes%smooth)
-      if (system%tied) call setup_tie_pattern(model, system, error)
+      ! the ties' checks (the node pairs their elimination needs: the Newton solver's
+      ! constraint equations, add_pattern_pairs)
+      if (system%tied) call check_tie_nodes(model%mesh, system%passes, model%contact_pairs(system%passes%pair)%id, &
+                                            error)
    end subroutine setup_contact
 
    !> An automatic penalty (a pair without EPSN or EPST) is set by the deck reader before the
@@ -152,21 +155,16 @@ contains
       if (culprit > 0) pair = passes(culprit)%pair
    end subroutine check_ties
 
-   !> Ties: the checks of frix_tie_constraints and the node pairs their elimination needs, kept
-   !> among the extra pairs of every sparse pattern.
-   subroutine setup_tie_pattern(model, system, error)
-      type(model_t), intent(in) :: model
+   !> Node pairs kept among the extra pairs of every sparse pattern the contact search builds
+   !> (those of the eliminated constraint equations, frix_constraint_equations).
+   subroutine add_pattern_pairs(system, pairs)
       type(contact_system_t), intent(inout) :: system
-      type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: pairs(:, :)
+      integer, intent(in) :: pairs(:, :)   !! (2, n)
       integer :: k
-      call check_tie_nodes(model%mesh, system%passes, model%contact_pairs(system%passes%pair)%id, error)
-      if (allocated(error)) return
-      call tie_pattern_pairs(model%mesh, system%passes, pairs)
       do k = 1, size(pairs, 2)
          call add_extra_pair(system, pairs(1, k), pairs(2, k))
       end do
-   end subroutine setup_tie_pattern
+   end subroutine add_pattern_pairs
 
    !> Whether a pass's master surface gets smoothed normals: NORMALS Smoothed always, NORMALS
    !> Auto where the surface is curved (frix_contact_patches' surface_is_curved).
