@@ -12,7 +12,8 @@
 !> m_k; the dependent equations are then left with an empty row and column, which the Newton
 !> solver treats like fixed ones, and their corrections are recovered as du_e = sum_k w_k du_(m_k).
 !> The transformation keeps the matrix symmetric and needs the node pairs (node of m_k, n) for
-!> every neighbour n of e's node in the sparse pattern (pattern_pairs). A row acts only where
+!> every neighbour n of e's node in the sparse pattern (pattern_pairs; for pairs added later by
+!> the contact search, master_nodes). A row acts only where
 !> its equation has no Dirichlet condition (`dependent`); masters must not be dependent
 !> themselves (no chains), which the callers check.
 module frix_constraint_equations
@@ -41,6 +42,7 @@ module frix_constraint_equations
       procedure :: expand_vector
       procedure :: condense_matrix
       procedure :: pattern_pairs
+      procedure :: master_nodes
    end type constraint_equations_t
 
 contains
@@ -239,15 +241,15 @@ contains
       integer, intent(in) :: first, second
       type(error_t), allocatable, intent(inout) :: error
       call fatal_error(error, 'constraint elimination: the node pair ('//to_string(first)//', '// &
-                       to_string(second)//') is not in the sparse pattern (a tied or coupled node in a '// &
-                       'contact pair as well?)')
+                       to_string(second)//') is not in the sparse pattern')
    end subroutine missing_pair
 
    !> The node pairs the elimination needs in the sparse pattern, from the element connectivity
    !> (`connectivity(:, e)`, 0 for no node): (a, n) for every master node a of a constrained node
    !> s and every node n of an element at s, and (a, b) when n is itself constrained with master
    !> node b. Every row is counted, whatever the Dirichlet conditions. Pairs that contact adds
-   !> later at a constrained node are not foreseen: condense_matrix reports them.
+   !> later at a constrained node come with their masters' through master_nodes
+   !> (frix_contact_assembly); a missing pair is reported by condense_matrix.
    subroutine pattern_pairs(self, n_nodes, connectivity, pairs)
       class(constraint_equations_t), intent(in) :: self
       integer, intent(in) :: n_nodes, connectivity(:, :)
@@ -294,13 +296,19 @@ contains
       end subroutine add_pairs
    end subroutine pattern_pairs
 
-   !> For every node, the distinct master nodes of its rows: masters(first(s)+1:first(s+1)).
+   !> For every node, the distinct master nodes of its rows: masters(first(s)+1:first(s+1))
+   !> (none for a node without rows; `masters` empty without any row).
    subroutine master_nodes(self, n_nodes, first, masters)
-      type(constraint_equations_t), intent(in) :: self
+      class(constraint_equations_t), intent(in) :: self
       integer, intent(in) :: n_nodes
       integer, allocatable, intent(out) :: first(:), masters(:)
       integer, allocatable :: rows_of(:), row_list(:), fill(:)
       integer :: r, s, k, a, n_masters
+      if (self%n_rows == 0) then
+         allocate (first(n_nodes + 1), source=0)
+         allocate (masters(0))
+         return
+      end if
       ! the rows of each node (CSR), then their master nodes without repetition
       allocate (rows_of(n_nodes + 1), source=0)
       do r = 1, self%n_rows
@@ -317,7 +325,7 @@ contains
          fill(s) = fill(s) + 1
          row_list(fill(s)) = r
       end do
-      allocate (first(n_nodes + 1), masters(max(1, self%start(self%n_rows + 1))))
+      allocate (first(n_nodes + 1), masters(self%start(self%n_rows + 1)))
       first(1) = 0
       n_masters = 0
       do s = 1, n_nodes
@@ -331,5 +339,6 @@ contains
          end do
          first(s + 1) = n_masters
       end do
+      masters = masters(:n_masters)
    end subroutine master_nodes
 end module frix_constraint_equations

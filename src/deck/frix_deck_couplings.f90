@@ -6,7 +6,7 @@
 !> and their checks against each other, the Dirichlet conditions and the contact conditions
 !> (read before it): the elimination (frix_constraint_equations) admits no chains, so a
 !> coupled node is coupled once and is neither a reference or rotation node, nor on a surface
-!> of a TIE or contact PAIR, nor prescribed by a Dirichlet condition.
+!> of a TIE, nor prescribed by a Dirichlet condition (contact PAIRs may hold coupled nodes).
 module frix_deck_couplings
    use frix_strings, only: to_string
    use frix_mesh, only: hex8_face_nodes
@@ -210,8 +210,8 @@ contains
    end function coupling_node
 
    !> The coupled nodes: none coupled or reference/rotation node of an earlier coupling, none
-   !> with a Dirichlet condition, none on a surface of a TIE or contact PAIR (reported at the
-   !> set's name with the first such node).
+   !> with a Dirichlet condition, none on a surface of a TIE (reported at the set's name with
+   !> the first such node).
    subroutine check_coupled_nodes(reader, model, line, coupling, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(in) :: model
@@ -229,7 +229,7 @@ contains
                if (len(conflict) > 0) exit
             end do
             if (len(conflict) == 0) conflict = dirichlet_conflict(model, node)
-            if (len(conflict) == 0) conflict = contact_conflict(model, node)
+            if (len(conflict) == 0) conflict = tie_conflict(model, node)
             if (len(conflict) == 0) cycle
             call reader%report(line, 5, 'coupled node '//to_string(model%mesh%node_ids(node))//' '//conflict)
             ok = .false.
@@ -237,7 +237,7 @@ contains
          end associate
       end do
       ! the reference node must not depend on a TIE either
-      conflict = contact_conflict(model, coupling%reference_node, slave_only=.true.)
+      conflict = tie_conflict(model, coupling%reference_node, slave_only=.true.)
       if (len(conflict) == 0) return
       call reader%report(line, token_after(line, 'REF_NODE'), 'the reference node '//conflict)
       ok = .false.
@@ -258,10 +258,9 @@ contains
       end do
    end function dirichlet_conflict
 
-   !> '' or why `node` cannot be coupled: it is on a surface of a TIE (chains are not
-   !> eliminated) or of a contact PAIR (its contact kernels would need pattern entries with the
-   !> reference and rotation nodes); with `slave_only` only a TIE's slave surface counts.
-   function contact_conflict(model, node, slave_only) result(conflict)
+   !> '' or why `node` cannot be coupled: it is on a surface of a TIE (its row and the tie's
+   !> would chain); with `slave_only` only a TIE's slave surface counts.
+   function tie_conflict(model, node, slave_only) result(conflict)
       type(model_t), intent(in) :: model
       integer, intent(in) :: node
       logical, intent(in), optional :: slave_only
@@ -273,25 +272,18 @@ contains
       conflict = ''
       do p = 1, size(model%contact_pairs)
          associate (pair => model%contact_pairs(p))
-            if (slaves .and. .not. pair%tied) cycle
+            if (.not. pair%tied) cycle
             if (on_surface(model, pair%slave_surface, node)) then
-               conflict = 'is on the slave surface of '//kind_of(pair%tied)//' '//to_string(pair%id)
+               conflict = 'is on the slave surface of TIE '//to_string(pair%id)
             else if (.not. slaves .and. on_surface(model, pair%master_surface, node)) then
-               conflict = 'is on the master surface of '//kind_of(pair%tied)//' '//to_string(pair%id)
+               conflict = 'is on the master surface of TIE '//to_string(pair%id)
             end if
             if (len(conflict) == 0) cycle
-            conflict = conflict//' (a coupled node can be neither tied nor in contact)'
+            conflict = conflict//' (chained constraints are not supported)'
             return
          end associate
       end do
-   contains
-      function kind_of(tied) result(text)
-         logical, intent(in) :: tied
-         character(len=:), allocatable :: text
-         text = merge('TIE ', 'PAIR', tied)
-         text = trim(text)
-      end function kind_of
-   end function contact_conflict
+   end function tie_conflict
 
    !> Whether `node` is a node of a face of surface `surface` (0: a rigid plane, no nodes).
    logical function on_surface(model, surface, node)

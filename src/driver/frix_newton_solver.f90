@@ -122,14 +122,15 @@ contains
       type(analysis_state_t), intent(inout) :: state   !! with its contact passes set up
       type(newton_context_t), intent(out) :: context
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: pairs(:, :)
+      integer, allocatable :: pairs(:, :), first(:), masters(:)
       integer :: n
       n = 3*model%mesh%n_nodes
       if (tied(state)) call add_tie_equations(state%contact%passes, context%constraints)
       call add_coupling_equations(model, context%constraints)
       call context%constraints%pattern_pairs(model%mesh%n_nodes, model%mesh%connectivity, pairs)
       if (state%has_contact) then
-         call add_pattern_pairs(state%contact, pairs)
+         call context%constraints%master_nodes(model%mesh%n_nodes, first, masters)
+         call add_pattern_pairs(state%contact, pairs, first, masters)
          call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, &
                                                        state%contact%extra_pairs(:, :state%contact%n_extra), error)
       else

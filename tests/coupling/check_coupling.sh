@@ -4,11 +4,12 @@
 # cantilever_axial (reaction E A u / L), cantilever_loads (force and moment at the reference
 # and rotation nodes: beam theory, exact for nu = 0), cantilever_torsion (Saint-Venant, mesh
 # tolerance) and rigid_rotation (a free block moved rigidly: u = u_R + theta x (X - X_R),
-# zero strain and reactions).
+# zero strain and reactions), rigid_punch (coupled nodes in contact: a rigid punch pressed onto a
+# foundation, uniform pressure; node-to-segment and mortar contact).
 set -eu
 frix=$1; here=$2
 out=$(mktemp -d); trap 'rm -rf "$out"' EXIT
-for deck in cantilever_axial cantilever_loads cantilever_torsion rigid_rotation; do
+for deck in cantilever_axial cantilever_loads cantilever_torsion rigid_rotation rigid_punch rigid_punch_mortar; do
   "$frix" "$here/$deck.dck" --out "$out" --quiet
 done
 /usr/bin/python3 - "$out" <<'PY'
@@ -76,5 +77,18 @@ _, _, g = last_increment('rigid_rotation')
 strain, reaction = np.abs(g['strain'][()]).max(), np.abs(g['reaction'][()]).max()
 check("rigid: zero strain", strain <= 1e-14, f"max |strain| {strain:.1e} (tol 1e-14; the motion is of size 1e-2)")
 check("rigid: zero reactions", reaction <= 1e-11, f"max |reaction| {reaction:.1e} (tol 1e-11; E = 1000)")
+
+# Rigid punch on a foundation through contact: p = F / A = 2, u_z(R) = -p (H / E + 1 / EPSN).
+p, H, eps_n = 8.0 / 4.0, 1.0, 1.0e4
+h = history('rigid_punch')
+relative("punch: u_z of the reference node = -p (H / E + 1 / EPSN)", h['u3_n9001'], -p * (H / E + 1 / eps_n), 1e-10)
+moment = max(abs(h['r1_n9002']), abs(h['r2_n9002']))
+check("punch: no moment at the rotation node", moment <= 1e-10, f"max |M_x|, |M_y| = {moment:.1e} (tol 1e-10; F L = 8)")
+contact = np.atleast_1d(np.genfromtxt(f"{out}/rigid_punch_contact.csv", delimiter=',', names=True))
+err = np.abs(contact['pressure'] / p - 1).max()
+check(f"punch: contact pressure p at all {contact.size} slave nodes", contact.size == 25 and err <= 1e-10,
+      f"max rel. error {err:.1e} (tol 1e-10)")
+h = history('rigid_punch_mortar')
+relative("punch, mortar contact: u_z of the reference node", h['u3_n9001'], -p * (H / E + 1 / eps_n), 1e-10)
 sys.exit(fail)
 PY
