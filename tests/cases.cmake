@@ -259,3 +259,5 @@ add_test(NAME tutorial_pipe_in_soil
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/inp/run_inp_case.sh ${FRIX_BIN}
                  ${pipe_in_soil}/check_pipe_in_soil.py ${pipe_in_soil}/pipe_in_soil.dck)
 set_tests_properties(tutorial_pipe_in_soil PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
+# Kinematic couplings (tests/coupling).
+include(${CMAKE_CURRENT_SOURCE_DIR}/coupling/coupling.cmake)

@@ -36,7 +36,7 @@ module frix_contact_assembly
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
    use frix_tie_pass, only: setup_tie
    use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass, commit_mortar_pass, restart_mortar_pass
-   use frix_tie_constraints, only: check_tie_nodes, tie_pattern_pairs
+   use frix_tie_constraints, only: check_tie_nodes
    use frix_strings, only: to_string
    use frix_friction_law, only: branch_free, branch_stick
    implicit none
@@ -46,12 +46,16 @@ module frix_contact_assembly
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
    public :: contact_history_rows, get_contact_history, set_contact_history, restart_mortar_rows
    public :: reset_friction_branches, release_inconsistent_branches
-   public :: check_ties
+   public :: check_ties, add_pattern_pairs
 
    type :: contact_system_t
       type(contact_pass_t), allocatable :: passes(:)
       integer, allocatable :: extra_pairs(:, :)   !! (2, n) node pairs added to the sparse pattern
       integer :: n_extra = 0
+      !> the master nodes of each node with eliminated constraint rows (ties, couplings):
+      !> constraint_masters(constraint_first(a)+1:constraint_first(a+1)); unallocated without
+      !> such rows. A pair that the search adds at such a node brings the pairs of its masters.
+      integer, allocatable :: constraint_first(:), constraint_masters(:)
       logical :: frictional = .false.             !! some pair has friction
       logical :: tied = .false.                   !! some pair is a TIE (frix_tie_constraints)
       !> friction or smoothed normals: the contact tangent is unsymmetric
@@ -111,7 +115,10 @@ contains
          end associate
       end do
       system%unsymmetric = system%frictional .or. any(system%passes%smooth)
-      if (system%tied) call setup_tie_pattern(model, system, error)
+      ! the ties' checks (the node pairs their elimination needs: the Newton solver's
+      ! constraint equations, add_pattern_pairs)
+      if (system%tied) call check_tie_nodes(model%mesh, system%passes, model%contact_pairs(system%passes%pair)%id, &
+                                            error)
    end subroutine setup_contact
 
    !> An automatic penalty (a pair without EPSN or EPST) is set by the deck reader before the
@@ -152,21 +159,44 @@ contains
       if (culprit > 0) pair = passes(culprit)%pair
    end subroutine check_ties
 
-   !> Ties: the checks of frix_tie_constraints and the node pairs their elimination needs, kept
-   !> among the extra pairs of every sparse pattern.
-   subroutine setup_tie_pattern(model, system, error)
-      type(model_t), intent(in) :: model
+   !> The eliminated constraint equations (frix_constraint_equations): the node pairs their
+   !> elimination needs, kept among the extra pairs of every sparse pattern the contact search
+   !> builds, and the master nodes of each constrained node (`first`, `masters`), with which
+   !> every pair the search adds later at a constrained node brings the pairs of its masters.
+   subroutine add_pattern_pairs(system, pairs, first, masters)
       type(contact_system_t), intent(inout) :: system
-      type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: pairs(:, :)
+      integer, intent(in) :: pairs(:, :)   !! (2, n)
+      integer, intent(in) :: first(:), masters(:)
       integer :: k
-      call check_tie_nodes(model%mesh, system%passes, model%contact_pairs(system%passes%pair)%id, error)
-      if (allocated(error)) return
-      call tie_pattern_pairs(model%mesh, system%passes, pairs)
       do k = 1, size(pairs, 2)
          call add_extra_pair(system, pairs(1, k), pairs(2, k))
       end do
-   end subroutine setup_tie_pattern
+      if (size(masters) == 0) return
+      system%constraint_first = first
+      system%constraint_masters = masters
+   end subroutine add_pattern_pairs
+
+   !> The pair (first, second) and, where either node has constraint rows, the pairs of its
+   !> masters with the other node and its masters (the elimination moves the constrained
+   !> node's row and column onto its masters').
+   subroutine add_contact_pair(system, first, second)
+      type(contact_system_t), intent(inout) :: system
+      integer, intent(in) :: first, second
+      integer :: i, j
+      call add_extra_pair(system, first, second)
+      if (.not. allocated(system%constraint_first)) return
+      associate (f => system%constraint_first, m => system%constraint_masters)
+         do i = f(first) + 1, f(first + 1)
+            call add_extra_pair(system, m(i), second)
+            do j = f(second) + 1, f(second + 1)
+               call add_extra_pair(system, m(i), m(j))
+            end do
+         end do
+         do j = f(second) + 1, f(second + 1)
+            call add_extra_pair(system, first, m(j))
+         end do
+      end associate
+   end subroutine add_contact_pair
 
    !> Whether a pass's master surface gets smoothed normals: NORMALS Smoothed always, NORMALS
    !> Auto where the surface is curved (frix_contact_patches' surface_is_curved).
@@ -270,7 +300,7 @@ contains
                                     .not. model%contact_pairs(system%passes(p)%pair)%parameters%friction%frictionless(), &
                                     u, matrix, pairs, n_pairs)
             do i = 1, n_pairs
-               call add_extra_pair(system, pairs(1, i), pairs(2, i))
+               call add_contact_pair(system, pairs(1, i), pairs(2, i))
             end do
             missing = missing .or. n_pairs > 0
             cycle
@@ -288,7 +318,7 @@ contains
                do a = 1, merge(5, 1, n_nodes > 5)
                   do b = max(a + 1, merge(2, 6, a == 1)), n_nodes
                      if (matrix%neighbour_index(nodes(a), nodes(b)) == 0) then
-                        call add_extra_pair(system, nodes(a), nodes(b))
+                        call add_contact_pair(system, nodes(a), nodes(b))
                         missing = .true.
                      end if
                   end do

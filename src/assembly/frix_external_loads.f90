@@ -112,7 +112,8 @@ contains
    end subroutine assemble_external
 
    !> Constrained equations and their prescribed values at time t. Nodes that belong to no
-   !> element have no stiffness: they are held fixed.
+   !> element have no stiffness: they are held fixed, except the reference and rotation nodes
+   !> of kinematic couplings (frix_kinematic_coupling), which receive the coupled nodes' stiffness.
    subroutine prescribed_displacements(model, time, fixed, values)
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: time
@@ -135,6 +136,10 @@ contains
       end if
       allocate (in_element(model%mesh%n_nodes), source=.false.)
       in_element(pack(model%mesh%connectivity, .true.)) = .true.
+      if (allocated(model%couplings)) then
+         in_element(model%couplings%reference_node) = .true.
+         in_element(model%couplings%rotation_node) = .true.
+      end if
       do node = 1, model%mesh%n_nodes
          if (.not. in_element(node)) fixed(3*node - 2:3*node) = .true.
       end do

@@ -16,7 +16,7 @@ module frix_model
 
    public :: model_t, element_block_t, dirichlet_t, nodal_force_t, pressure_load_t
    public :: body_force_t, load_curve_t, step_t, solver_controls_t, results_request_t
-   public :: history_request_t, curve_factor, contact_pair_t
+   public :: history_request_t, curve_factor, contact_pair_t, kinematic_coupling_t
 
    !> Elements sharing one formulation and one material.
    type :: element_block_t
@@ -151,6 +151,17 @@ module frix_model
       integer :: line = 0                   !! deck line
    end type contact_pair_t
 
+   !> A kinematic (rigid) coupling: the coupled nodes follow the small rigid motion of a
+   !> reference node, u_i = u_R + theta x (X_i - X_R), with theta the displacements of the
+   !> rotation node (frix_kinematic_coupling, docs/couplings.md).
+   type :: kinematic_coupling_t
+      integer :: id = 0
+      integer :: reference_node = 0        !! internal node number R (its displacements: u_R)
+      integer :: rotation_node = 0         !! internal node number Q (its displacements: theta)
+      integer, allocatable :: nodes(:)     !! the coupled nodes (internal numbers, sorted)
+      integer :: line = 0                  !! deck line
+   end type kinematic_coupling_t
+
    type :: model_t
       character(len=:), allocatable :: deck_path       !! as given on the command line
       character(len=:), allocatable :: title           !! the deck's header comment lines
@@ -165,6 +176,7 @@ module frix_model
       type(load_curve_t), allocatable :: curves(:)
       type(step_t), allocatable :: steps(:)
       type(contact_pair_t), allocatable :: contact_pairs(:)
+      type(kinematic_coupling_t), allocatable :: couplings(:)
       type(solver_controls_t) :: controls
       type(results_request_t) :: results
    end type model_t

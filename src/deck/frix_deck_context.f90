@@ -17,18 +17,19 @@ module frix_deck_context
    public :: require, read_node_dof, read_dof, mark_nodes, extend_origins, extend_properties, one_line, line_integer
    public :: s_problem, s_static, s_curves, s_materials, s_mesh_file, s_node_coords, s_elements, &
              s_mesh_block, s_node_sets, s_surfaces, s_dirichlet, s_neumann, s_body_force, s_steps, &
-             s_results, s_contact, s_end
+             s_results, s_contact, s_couplings, s_end
 
    integer, parameter :: name_length = 20
    !> Known sections (the order of reading is read_deck's, frix_deck_reader).
-   character(len=name_length), parameter :: deck_section_names(17) = [character(len=name_length) :: &
+   character(len=name_length), parameter :: deck_section_names(18) = [character(len=name_length) :: &
       'PROBLEM TYP', 'STATIC', 'LOAD CURVES', 'MATERIALS', 'MESH FILE', 'NODE COORDS', &
       'STRUCTURE ELEMENTS', 'MESH BLOCK', 'NODE SETS', 'SURFACES', 'DIRICHLET CONDITIONS', &
-      'NEUMANN CONDITIONS', 'BODY FORCE', 'STEPS', 'RESULTS', 'CONTACT CONDITIONS', 'END']
+      'NEUMANN CONDITIONS', 'BODY FORCE', 'STEPS', 'RESULTS', 'CONTACT CONDITIONS', 'COUPLINGS', 'END']
    integer, parameter :: s_problem = 1, s_static = 2, s_curves = 3, s_materials = 4, &
                          s_mesh_file = 5, s_node_coords = 6, s_elements = 7, s_mesh_block = 8, &
                          s_node_sets = 9, s_surfaces = 10, s_dirichlet = 11, s_neumann = 12, &
-                         s_body_force = 13, s_steps = 14, s_results = 15, s_contact = 16, s_end = 17
+                         s_body_force = 13, s_steps = 14, s_results = 15, s_contact = 16, s_couplings = 17, &
+                         s_end = 18
 
    !> Relative tolerance of BOX selections, times the diagonal of the model's bounding box.
    real(dp), parameter :: box_tolerance = 1.0e-9_dp

@@ -7,10 +7,12 @@
 !> Sections are processed in a fixed order, whatever their order in the file, so that every
 !> reference points backwards: controls, curves, materials; the mesh (MESH FILE, NODE COORDS,
 !> element lines of STRUCTURE ELEMENTS, MESH BLOCK, then the SET lines of STRUCTURE ELEMENTS);
-!> NODE SETS, SURFACES; conditions and loads; STEPS; RESULTS; then, in a valid model (mesh,
+!> NODE SETS, SURFACES; conditions and loads; CONTACT CONDITIONS; COUPLINGS; STEPS; RESULTS;
+!> then, in a valid model (mesh,
 !> materials and element blocks complete), the automatic contact penalties, the ties' nodes
 !> and the supports against rigid-body motion (frix_deck_supports). Each section has its reader in
-!> a module of its own (frix_deck_controls, _properties, _mesh, _loads, _contact, _results).
+!> a module of its own (frix_deck_controls, _properties, _mesh, _loads, _contact, _couplings,
+!> _results).
 module frix_deck_reader
    use frix_error, only: error_t
    use frix_strings, only: to_string
@@ -25,6 +27,7 @@ module frix_deck_reader
                              read_node_sets, read_surfaces
    use frix_deck_loads, only: read_dirichlet, read_neumann, read_body_forces
    use frix_deck_contact, only: read_contact_pairs, set_automatic_penalties
+   use frix_deck_couplings, only: read_couplings
    use frix_deck_results, only: read_results
    use frix_deck_supports, only: check_ties_and_supports
    implicit none
@@ -67,6 +70,7 @@ contains
       call read_neumann(reader, model)
       call read_body_forces(reader, model)
       call read_contact_pairs(reader, model)
+      call read_couplings(reader, model)
       call read_steps(reader, model)
       call read_results(reader, model)
       call validate_model(reader, model)
@@ -180,6 +184,7 @@ contains
          call find_orphan_nodes(model%mesh, orphans)
          do k = 1, size(orphans)
             associate (node => orphans(k))
+               if (reference_or_rotation(model, node)) cycle   ! a coupling's own node (frix_deck_couplings)
                if (reader%node_condition_line(node) > 0) then
                   call reader%diagnostics%at_line(reader%lines(reader%node_condition_line(node)), 1, &
                                                   'node '//to_string(model%mesh%node_ids(node))// &
@@ -189,6 +194,19 @@ contains
          end do
       end if
    end subroutine validate_model
+
+   !> Whether `node` is the reference or rotation node of a coupling (these carry conditions
+   !> and loads without an element).
+   logical function reference_or_rotation(model, node)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: node
+      integer :: k
+      reference_or_rotation = .false.
+      do k = 1, size(model%couplings)
+         if (any([model%couplings(k)%reference_node, model%couplings(k)%rotation_node] == node)) &
+            reference_or_rotation = .true.
+      end do
+   end function reference_or_rotation
 
    !> One message per deck line that created offending elements, naming the first of them.
    subroutine report_elements(reader, model, elements, what)

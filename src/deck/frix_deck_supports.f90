@@ -10,6 +10,7 @@
 !>   one body (a periodic or seam tie) leaves that body to its own supports. Necessary, not
 !>   sufficient: a body held at one node can still rotate; the factorization then names the
 !>   node where it broke down. Reported at the line that created the body's first element.
+!>   A kinematic coupling holds its coupled nodes' bodies where its reference node is fixed.
 module frix_deck_supports
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -66,6 +67,7 @@ contains
          body = group(body_of_node(node))
          held(:, body) = held(:, body) .or. fixed(3*node - 2:3*node) .or. in_contact(node)
       end do
+      call hold_coupled_bodies(model, body_of_node, group, fixed, held)
       allocate (first_element(n_bodies), element_count(n_bodies), source=0)
       do e = 1, model%mesh%n_elements
          body = group(body_of_node(model%mesh%connectivity(1, e)))
@@ -82,6 +84,24 @@ contains
                         free_directions(held(:, body))//': it can move as a rigid body (singular stiffness matrix)')
       end do
    end subroutine check_supports
+
+   !> A kinematic coupling holds the bodies of its coupled nodes in the directions its
+   !> reference node is fixed in (frix_kinematic_coupling).
+   subroutine hold_coupled_bodies(model, body_of_node, group, fixed, held)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: body_of_node(:), group(:)
+      logical, intent(in) :: fixed(:)
+      logical, intent(inout) :: held(:, :)
+      integer :: k, j, body
+      do k = 1, size(model%couplings)
+         associate (reference => model%couplings(k)%reference_node)
+            do j = 1, size(model%couplings(k)%nodes)
+               body = group(body_of_node(model%couplings(k)%nodes(j)))
+               held(:, body) = held(:, body) .or. fixed(3*reference - 2:3*reference)
+            end do
+         end associate
+      end do
+   end subroutine hold_coupled_bodies
 
    !> For each body, the representative of the bodies joined to it by ties: the smallest body
    !> number of the group (merging two groups keeps the smaller of their two labels).

@@ -32,14 +32,15 @@ module frix_newton_solver
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
-   use frix_tie_constraints, only: dependent_equations, condense_vector, condense_matrix, expand_vector, &
-                                   record_tie_forces
+   use frix_constraint_equations, only: constraint_equations_t
+   use frix_tie_constraints, only: add_tie_equations, record_tie_forces
+   use frix_kinematic_coupling, only: add_coupling_equations
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
    use frix_newton_report, only: newton_report_t, reserve_iteration_log, print_progress
    use frix_equation_checks, only: check_finite, check_finite_tangent, describe_singularity, equation_label
    use frix_contact_assembly, only: search_contact, assemble_contact, &
                                     contact_counts, reset_friction_branches, &
-                                    release_inconsistent_branches
+                                    release_inconsistent_branches, add_pattern_pairs
    implicit none
    private
 
@@ -75,7 +76,9 @@ module frix_newton_solver
       class(linear_solver_t), allocatable :: solver    !! from the deck's SOLVER (frix_linear_solver_registry)
       logical :: symmetric = .true.        !! tangent symmetric: materials, loads and contact all say so
       logical, allocatable :: fixed(:)     !! constrained equations
-      !> equations eliminated by ties (frix_tie_constraints): solved as fixed, then recovered
+      !> the rows of the ties and kinematic couplings (frix_constraint_equations)
+      type(constraint_equations_t) :: constraints
+      !> equations eliminated by those rows: solved as fixed, then recovered
       logical, allocatable :: dependent(:)
       real(dp), allocatable :: prescribed(:)
       real(dp), allocatable :: fint(:), fext(:), residual(:), correction(:)
@@ -111,19 +114,27 @@ module frix_newton_solver
 
 contains
 
-   !> Sparse pattern from the connectivity, the linear solver and work arrays.
+   !> The constraint equations of the ties and couplings, the sparse pattern from the
+   !> connectivity with the pairs their elimination needs (kept among the contact system's
+   !> extra pairs, which every rebuild of the pattern uses), the linear solver and work arrays.
    subroutine setup_newton(model, state, context, error)
       type(model_t), intent(in) :: model
-      type(analysis_state_t), intent(in) :: state   !! with its contact passes set up
+      type(analysis_state_t), intent(inout) :: state   !! with its contact passes set up
       type(newton_context_t), intent(out) :: context
       type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: pairs(:, :), first(:), masters(:)
       integer :: n
       n = 3*model%mesh%n_nodes
-      if (state%has_contact) then   ! with the pairs ties need (frix_tie_constraints)
+      if (tied(state)) call add_tie_equations(state%contact%passes, context%constraints)
+      call add_coupling_equations(model, context%constraints)
+      call context%constraints%pattern_pairs(model%mesh%n_nodes, model%mesh%connectivity, pairs)
+      if (state%has_contact) then
+         call context%constraints%master_nodes(model%mesh%n_nodes, first, masters)
+         call add_pattern_pairs(state%contact, pairs, first, masters)
          call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, &
                                                        state%contact%extra_pairs(:, :state%contact%n_extra), error)
       else
-         call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, error=error)
+         call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, pairs, error)
       end if
       if (allocated(error)) return
       context%symmetric = .not. has_follower_loads(model) .and. internal_tangent_symmetric(model)
@@ -244,13 +255,19 @@ contains
          call prescribed_displacements(model, time, context%fixed, context%prescribed)
       end if
       where (context%fixed) state%u = context%prescribed
-      if (tied(state)) then
-         call dependent_equations(state%contact%passes, context%fixed, context%dependent)
-         call expand_vector(state%contact%passes, context%dependent, state%u)
+      if (constrained(context)) then
+         call context%constraints%dependent_equations(context%fixed, context%dependent)
+         call context%constraints%expand_vector(context%dependent, state%u)
       end if
    end subroutine start_increment
 
-   !> Whether the model has ties (equations eliminated by frix_tie_constraints).
+   !> Whether the model has equations eliminated by constraints (ties, couplings).
+   pure logical function constrained(context)
+      type(newton_context_t), intent(in) :: context
+      constrained = .not. context%constraints%empty()
+   end function constrained
+
+   !> Whether the model has ties (frix_tie_constraints).
    pure logical function tied(state)
       type(analysis_state_t), intent(in) :: state
       tied = .false.
@@ -380,7 +397,7 @@ contains
          return
       end if
       where (context%fixed) context%correction = 0.0_dp
-      if (tied(state)) call expand_vector(state%contact%passes, context%dependent, context%correction)
+      if (constrained(context)) call context%constraints%expand_vector(context%dependent, context%correction)
       time_correction = 0.0_dp
       if (driving(path)) then
          call path_correction(model, context, state, path, time_correction, report%failure, error)
@@ -426,11 +443,11 @@ contains
       call assemble_external(model, path%step_start, state%u, context%load_response)
       context%load_rate = (context%load_rate - context%load_response)/(path%step_end - path%step_start)
       where (context%fixed) context%load_rate = 0.0_dp
-      if (tied(state)) call condense_vector(state%contact%passes, context%dependent, context%load_rate)
+      if (constrained(context)) call context%constraints%condense_vector(context%dependent, context%load_rate)
       call solve_factorized(context, context%load_rate, context%load_response, error)
       if (allocated(error)) return
       where (context%fixed) context%load_response = 0.0_dp
-      if (tied(state)) call expand_vector(state%contact%passes, context%dependent, context%load_response)
+      if (constrained(context)) call context%constraints%expand_vector(context%dependent, context%load_response)
       response = context%load_response(path%equation)
       if (.not. abs(response) > 0.0_dp) then
          failure = 'the loads do not move the driving displacement ('// &
@@ -523,8 +540,8 @@ contains
       context%assembly_seconds = context%assembly_seconds + (wall_clock_seconds() - start)
       context%n_assemblies = context%n_assemblies + 1
       context%residual = context%fext - context%fint
-      if (tied(state)) then
-         call eliminate_ties(model, context, state, with_tangent, error)
+      if (constrained(context)) then
+         call eliminate_constraints(model, context, state, with_tangent, error)
          if (allocated(error)) return
       end if
       where (context%fixed)
@@ -540,18 +557,20 @@ contains
          failure = 'the norm of the residual or of the reactions is not finite (beyond the range of real numbers)'
    end subroutine evaluate_equilibrium
 
-   !> Ties: their bond forces recorded from the residual, then the dependent equations
-   !> eliminated from the residual and (with_tangent) the tangent (frix_tie_constraints).
-   subroutine eliminate_ties(model, context, state, with_tangent, error)
+   !> Ties and couplings: the ties' bond forces recorded from the residual, then the dependent
+   !> equations eliminated from the residual and (with_tangent) the tangent
+   !> (frix_constraint_equations).
+   subroutine eliminate_constraints(model, context, state, with_tangent, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       logical, intent(in) :: with_tangent
       type(error_t), allocatable, intent(out) :: error
-      call record_tie_forces(model%mesh%coords, state%u, context%dependent, context%residual, state%contact%passes)
-      call condense_vector(state%contact%passes, context%dependent, context%residual)
-      if (with_tangent) call condense_matrix(state%contact%passes, context%dependent, context%matrix, error)
-   end subroutine eliminate_ties
+      if (tied(state)) call record_tie_forces(model%mesh%coords, state%u, context%dependent, context%residual, &
+                                              state%contact%passes)
+      call context%constraints%condense_vector(context%dependent, context%residual)
+      if (with_tangent) call context%constraints%condense_matrix(context%dependent, context%matrix, error)
+   end subroutine eliminate_constraints
 
    !> Line search after a Newton correction du with contact, when the residual at u + du is
    !> larger than before the correction (penalty contact overshoots as nodes enter or leave

@@ -1,7 +1,7 @@
 !> Ties: the dual mortar weights of frix_tie_mortar on flat grids (rows sum to 1, a linear
 !> field is reproduced, the slave areas spread over the master nodes as the master's own
 !> areas: the conditions of the patch test; matching grids give the identity) and the
-!> elimination of frix_tie_constraints against the dense T^T K T, T^T v and T u.
+!> elimination of the ties' rows (frix_tie_constraints, frix_constraint_equations) against the dense T^T K T, T^T v and T u.
 module test_tie_constraints
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -9,7 +9,8 @@ module test_tie_constraints
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_tie_mortar, only: tie_coupling_t, mortar_coupling
    use frix_contact_pass, only: contact_pass_t
-   use frix_tie_constraints, only: condense_matrix, condense_vector, expand_vector
+   use frix_constraint_equations, only: constraint_equations_t
+   use frix_tie_constraints, only: add_tie_equations
    implicit none
    private
 
@@ -139,6 +140,7 @@ contains
       integer, parameter :: n = 18
       type(sparse_matrix_t) :: matrix
       type(contact_pass_t) :: pass(1)
+      type(constraint_equations_t) :: constraints
       real(dp) :: dense(n, n), t(n, n), expected(n, n), v(n), u(n), got(n)
       logical :: dependent(n)
       type(error_t), allocatable :: failure
@@ -158,6 +160,7 @@ contains
       pass(1)%tie%start = [0, 4, 7]
       pass(1)%tie%nodes = [1, 2, 3, 4, 2, 3, 4]
       pass(1)%tie%weight = [0.1_dp, 0.2_dp, 0.3_dp, 0.4_dp, 0.5_dp, -0.25_dp, 0.75_dp]
+      call add_tie_equations(pass, constraints)
       dependent = .false.
       dependent(13:17) = .true.   ! node 5 x y z, node 6 x y
       ! T: identity but for the dependent rows, which hold the weights
@@ -170,7 +173,7 @@ contains
          if (i < 3) t(15 + i, [2, 3, 4]*3 - 3 + i) = [0.5_dp, -0.25_dp, 0.75_dp]
       end do
       expected = matmul(transpose(t), matmul(dense, t))
-      call condense_matrix(pass, dependent, matrix, failure)
+      call constraints%condense_matrix(dependent, matrix, failure)
       call check(error, .not. allocated(failure), 'every pair in the pattern')
       if (allocated(error)) return
       do j = 1, n
@@ -181,7 +184,7 @@ contains
       end do
       v = [(cos(real(i, dp)), i=1, n)]
       got = v
-      call condense_vector(pass, dependent, got)
+      call constraints%condense_vector(dependent, got)
       do i = 1, n
          call check_close(error, got(i), dot_product(t(:, i), v), 0.0_dp, 1.0e-14_dp, 'T^T v')
          if (allocated(error)) return
@@ -189,7 +192,7 @@ contains
       u = v
       u(13:17) = 0.0_dp
       got = u
-      call expand_vector(pass, dependent, got)
+      call constraints%expand_vector(dependent, got)
       do i = 1, n
          call check_close(error, got(i), dot_product(t(i, :), u), &
                           0.0_dp, 1.0e-14_dp, 'T u')
