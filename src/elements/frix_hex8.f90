@@ -13,7 +13,9 @@
 !>   (Grad N_a . S . Grad N_b) I (Bathe, Finite Element Procedures, 6.2; Wriggers, Nonlinear FEM, 4.2).
 !> EAS: E~ = (detJ0/detJ(xi)) T0^{-T} M(xi) alpha = G(xi) alpha (Simo & Rifai 1990; for the
 !>   Green-Lagrange enhancement Buechter, Ramm & Roehl 1994, Simo & Armero 1992). alpha is
-!>   solved locally so that h = sum_g G^T S dV_g = 0; the returned tangent is the statically
+!>   solved locally so that h = sum_g G^T S dV_g = 0 (Newton with a line search, K_aa solved
+!>   after diagonal scaling, each mode's residual against its own scale: solve_enhanced);
+!>   the returned tangent is the statically
 !>   condensed K_uu - K_ua K_aa^{-1} K_au, i.e. exactly d fint/du with alpha = alpha(u).
 !> A material whose tangent is symmetric (material_t%symmetric_tangent) gets the upper block
 !>   triangle computed and mirrored, and K_au = K_ua^T; for an unsymmetric one (non-associated
@@ -60,13 +62,24 @@ module frix_hex8
    !> Parent derivatives at the centre xi = 0: xi_ia / 8, (3, 8).
    real(dp), parameter :: centre_derivative(3, 8) = 0.125_dp*hex8_corner
 
-   integer, parameter :: max_local_iterations = 20   !! Newton steps on alpha before giving up
-   !> A local step after which the material fails (e.g. det C <= 0 under a large plastic
-   !> flow) is halved at most this many times (each halving counts as a local iteration).
-   integer, parameter :: max_step_halvings = 8
-   real(dp), parameter :: local_tolerance = 1.0e-12_dp !! |h| <= tol * sum_g |G|^T |S| dV
-   !> Round-off plateau test: |h| stopped decreasing and |h| <= plateau_tolerance *
-   !> sum_g |G| stress_floor max|C| dV, i.e. below 1e-12 |C| |G| dV, the round-off of S.
+   !> Newton steps on alpha before giving up. Under total Lagrangian kinematics with little
+   !> hardening a local solve far from equilibrium can take some 20-40 line-searched steps
+   !> before it converges quadratically (a thin element of a global Newton iterate).
+   integer, parameter :: max_local_iterations = 50
+   !> Material passes of the line search along one Newton step (enhanced_line_search).
+   integer, parameter :: max_line_search_trials = 8
+   !> The line search ends where |d . h| <= line_search_ratio |d . h(alpha)| along the step d.
+   real(dp), parameter :: line_search_ratio = 0.25_dp
+   !> The regula falsi's trial stays this fraction of the bracket away from its ends.
+   real(dp), parameter :: bracket_guard = 0.1_dp
+   !> Longest step along d (in Newton steps) that the line search tries.
+   real(dp), parameter :: max_step_length = 8.0_dp
+   !> Converged: every |h_k| <= local_tolerance sum_g |G_gk| max|S_g| dV, each mode against the
+   !> size of its own terms (a test against the largest mode's terms would leave the modes along
+   !> the length of a thin element, whose G is (thickness / length)^2 smaller, unconverged).
+   real(dp), parameter :: local_tolerance = 1.0e-12_dp
+   !> Round-off plateau test: |h| stopped decreasing and |h_k| <= plateau_tolerance *
+   !> sum_g |G_gk| stress_floor max|C| dV, i.e. below 1e-12 |C| |G| dV, the round-off of S.
    real(dp), parameter :: stress_floor = 1.0e-2_dp
    real(dp), parameter :: plateau_tolerance = 1.0e-10_dp
 
@@ -74,6 +87,37 @@ module frix_hex8
    !> of column i of the linear nodal strain-displacement block B_a (6 x 3).
    integer, parameter :: b_row(3, 3) = reshape([1, 4, 5, 2, 4, 6, 3, 5, 6], [3, 3])
    integer, parameter :: b_derivative(3, 3) = reshape([1, 2, 3, 2, 1, 3, 3, 1, 2], [3, 3])
+
+   !> The fixed data of an element's local EAS problem h(alpha) = 0.
+   type :: local_problem_t
+      integer :: n = 0                  !! number of enhanced parameters
+      logical :: finite = .false.       !! total Lagrangian: strains E, stresses S
+      real(dp) :: enhanced(6, max_eas_modes, 8) = 0.0_dp   !! G at each point
+      real(dp) :: volume(8) = 0.0_dp                       !! dV at each point
+      real(dp) :: compatible(6, 8) = 0.0_dp                !! compatible strains
+   end type local_problem_t
+
+   !> The local problem evaluated at one alpha.
+   type :: local_point_t
+      real(dp) :: total(6, 8), pk2(6, 8), moduli(6, 6, 8)   !! strains, stresses, tangents
+      real(dp) :: residual(max_eas_modes)      !! h = sum_g G^T S dV
+      real(dp) :: scale(max_eas_modes)         !! sum_g |G_g| max|S_g| dV, the size of h's terms
+      real(dp) :: floor_scale(max_eas_modes)   !! sum_g |G| stress_floor max|C| dV
+   end type local_point_t
+
+   !> The state of one line search along a local Newton step (enhanced_line_search).
+   type :: line_search_t
+      real(dp) :: slope0 = 0.0_dp, norm0 = 0.0_dp   !! phi(0) = d . h and |h| at the step's start
+      logical :: energy = .true.   !! phi(0) < 0: regula falsi on phi, else halving on |h|
+      real(dp) :: low = 0.0_dp, slope_low = 0.0_dp     !! bracket: phi(low) < 0 ...
+      real(dp) :: high = 0.0_dp, slope_high = 0.0_dp   !! ... phi(high) > 0 (huge: failed; high <= low: none yet)
+      integer :: side = 0        !! which end moved last (-1 low, 1 high), for the Illinois rule
+      real(dp) :: s = 1.0_dp     !! the trial step
+      real(dp) :: kept_s = 0.0_dp   !! the last admissible trial (0: none yet)
+   contains
+      procedure :: start => line_search_start
+      procedure :: accepts => line_search_accepts
+   end type line_search_t
 
    !> The HEX8 family. Construct with `new_hex8`.
    type, extends(element_t) :: hex8_t
@@ -157,7 +201,8 @@ contains
       real(dp) :: volume(8)                ! detJ * Gauss weight
       real(dp) :: deformation(3, 3, 8)     ! F (identity under linear kinematics)
       real(dp) :: compatible(6, 8), total(6, 8), pk2(6, 8), moduli(6, 6, 8)
-      real(dp) :: enhanced(6, max_eas_modes, 8)
+      type(local_problem_t) :: problem
+      type(local_point_t) :: point
       integer :: n, g, bad_point
       logical :: total_lagrangian, symmetric
 
@@ -194,11 +239,17 @@ contains
       end do
 
       if (n > 0) then
-         call enhanced_operators(self%name, coords, volume, n, enhanced, error)
+         problem%n = n
+         problem%finite = total_lagrangian
+         problem%volume = volume
+         problem%compatible = compatible
+         call enhanced_operators(self%name, coords, volume, n, problem%enhanced, error)
          if (allocated(error)) return
-         call solve_enhanced(self%name, material, total_lagrangian, n, enhanced, volume, compatible, &
-                             state_old, state_new, alpha(1:n), total, pk2, moduli, error)
+         call solve_enhanced(self%name, material, problem, state_old, state_new, alpha(1:n), point, error)
          if (allocated(error)) return
+         total = point%total
+         pk2 = point%pk2
+         moduli = point%moduli
       else
          total = compatible
          call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, &
@@ -215,7 +266,7 @@ contains
             call tangent_linear(dn_dx, volume, moduli, symmetric, tangent)
          end if
          if (n > 0) then
-            call condense(self%name, n, dn_dx, volume, deformation, moduli, enhanced, symmetric, tangent, error)
+            call condense(self%name, problem, dn_dx, deformation, moduli, symmetric, tangent, error)
             if (allocated(error)) return
          end if
       end if
@@ -341,82 +392,276 @@ contains
    end subroutine material_pass
 
    !> Local Newton on alpha: h(alpha) = sum_g G_g^T S_g dV_g = 0, starting from the alpha
-   !> passed in, with K_aa = sum_g G^T C G dV. Stops when max|h| <= local_tolerance *
-   !> max_k sum_g |G_g|^T |S_g| dV_g, or when |h| stops decreasing at round-off level (see
-   !> plateau_tolerance); a step after which the material fails is halved (max_step_halvings);
-   !> fails after max_local_iterations steps. On return stresses, tangents and history belong to the converged alpha.
-   subroutine solve_enhanced(name, material, finite, n, enhanced, volume, compatible, state_old, &
-                             state_new, alpha, total, pk2, moduli, error)
+   !> passed in, with K_aa = sum_g G^T C G dV and a line search along each Newton step
+   !> (enhanced_line_search). Converged when every |h_k| <= local_tolerance sum_g |G_gk|
+   !> max|S_g| dV_g, or when |h| stops decreasing at round-off level (see plateau_tolerance); fails after
+   !> max_local_iterations steps. On return stresses, tangents and history belong to the
+   !> converged alpha.
+   subroutine solve_enhanced(name, material, problem, state_old, state_new, alpha, point, error)
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
-      logical, intent(in) :: finite   !! total Lagrangian: total = E, pk2 = S
-      integer, intent(in) :: n
-      real(dp), intent(in) :: enhanced(:, :, :)
-      real(dp), intent(in) :: volume(8), compatible(6, 8)
+      type(local_problem_t), intent(in) :: problem
       real(dp), intent(in) :: state_old(:, :)
       real(dp), intent(inout) :: state_new(:, :)
       real(dp), intent(inout) :: alpha(:)
-      real(dp), intent(out) :: total(6, 8), pk2(6, 8), moduli(6, 6, 8)
+      type(local_point_t), intent(out) :: point
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: residual(max_eas_modes), scale(max_eas_modes), step(max_eas_modes, 1)
-      real(dp) :: floor_scale(max_eas_modes), residual_max, previous_max
-      real(dp) :: stiffness(max_eas_modes, max_eas_modes), weighted(6, max_eas_modes)
-      real(dp) :: accepted(max_eas_modes)
-      integer :: iteration, g, halvings
+      real(dp) :: direction(max_eas_modes, 1), stiffness(max_eas_modes, max_eas_modes), previous_max
+      integer :: iteration, n
       logical :: singular
+      n = problem%n
+      call evaluate_local(name, material, problem, alpha(1:n), state_old, state_new, point, error)
+      if (allocated(error)) return
       previous_max = huge(1.0_dp)
-      halvings = 0
-      do iteration = 0, max_local_iterations
-         do g = 1, 8
-            total(:, g) = compatible(:, g) + matmul(enhanced(:, 1:n, g), alpha(1:n))
-         end do
-         call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
-         if (allocated(error)) then
-            ! a Newton step that left the law's domain (det C <= 0, say): halve it
-            if (iteration == 0 .or. halvings == max_step_halvings) return
-            deallocate (error)
-            halvings = halvings + 1
-            alpha(1:n) = 0.5_dp*(accepted(1:n) + alpha(1:n))
-            cycle
-         end if
-         halvings = 0
-         residual(1:n) = 0.0_dp
-         scale(1:n) = 0.0_dp
-         floor_scale(1:n) = 0.0_dp
-         do g = 1, 8
-            residual(1:n) = residual(1:n) + volume(g)*matmul(pk2(:, g), enhanced(:, 1:n, g))
-            scale(1:n) = scale(1:n) + volume(g)*matmul(abs(pk2(:, g)), abs(enhanced(:, 1:n, g)))
-            floor_scale(1:n) = floor_scale(1:n) + volume(g)*stress_floor*maxval(abs(moduli(:, :, g)))* &
-                               sum(abs(enhanced(:, 1:n, g)), dim=1)
-         end do
-         residual_max = maxval(abs(residual(1:n)))
-         if (residual_max <= local_tolerance*maxval(scale(1:n))) return
-         ! Round-off plateau: a stress computed with cancellation (neo-Hookean
-         ! S = mu (I - C^-1) + ...) carries errors of order 1e-16 |C| however small it is, which
-         ! the relative test cannot beat in a nearly unstressed element: accept a residual that
-         ! stopped decreasing at a level negligible against stress_floor |C|.
-         if (iteration > 0 .and. residual_max > 0.5_dp*previous_max .and. &
-             residual_max <= plateau_tolerance*maxval(floor_scale(1:n))) return
-         previous_max = residual_max
-         if (iteration == max_local_iterations) exit
-         stiffness(1:n, 1:n) = 0.0_dp
-         do g = 1, 8
-            weighted(:, 1:n) = volume(g)*matmul(moduli(:, :, g), enhanced(:, 1:n, g))
-            stiffness(1:n, 1:n) = stiffness(1:n, 1:n) + matmul(transpose(enhanced(:, 1:n, g)), weighted(:, 1:n))
-         end do
-         step(1:n, 1) = residual(1:n)
-         call solve_in_place(stiffness(1:n, 1:n), step(1:n, :), singular)
+      do iteration = 1, max_local_iterations
+         if (local_converged(point, n, previous_max)) return
+         previous_max = maxval(abs(point%residual(1:n)))
+         call enhanced_stiffness(problem, point%moduli, stiffness(1:n, 1:n))
+         direction(1:n, 1) = -point%residual(1:n)
+         call solve_scaled(stiffness(1:n, 1:n), direction(1:n, :), singular)
          if (singular) then
             call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
             return
          end if
-         accepted(1:n) = alpha(1:n)
-         alpha(1:n) = alpha(1:n) - step(1:n, 1)
+         call enhanced_line_search(name, material, problem, direction(1:n, 1), state_old, state_new, &
+                                   alpha(1:n), point, error)
+         if (allocated(error)) return
       end do
+      if (local_converged(point, n, previous_max)) return
       call fatal_error(error, name//': local EAS iteration not converged after '// &
                        to_string(max_local_iterations)//' steps (|h| = '// &
-                       to_string(maxval(abs(residual(1:n))))//')')
+                       to_string(maxval(abs(point%residual(1:n))))//')')
    end subroutine solve_enhanced
+
+   !> Every |h_k| <= local_tolerance scale_k (a mode without stress, scale_k = 0, must have
+   !> h_k = 0), or the round-off plateau: a stress computed with cancellation (neo-Hookean
+   !> S = mu (I - C^-1) + ...) carries errors of order 1e-16 |C| however small it is, which
+   !> the relative test cannot beat in a nearly unstressed element: a residual that stopped
+   !> decreasing (above half the last one) at a level negligible against stress_floor |C| is
+   !> accepted.
+   pure logical function local_converged(point, n, previous_max) result(converged)
+      type(local_point_t), intent(in) :: point
+      integer, intent(in) :: n
+      real(dp), intent(in) :: previous_max   !! max|h| of the last step (huge before the first)
+      real(dp) :: residual_max
+      converged = all(abs(point%residual(1:n)) <= local_tolerance*point%scale(1:n))
+      if (converged) return
+      residual_max = maxval(abs(point%residual(1:n)))
+      converged = residual_max > 0.5_dp*previous_max .and. &
+                  all(abs(point%residual(1:n)) <= plateau_tolerance*point%floor_scale(1:n))
+   end function local_converged
+
+   !> Strains, material response, h and its scales at alpha (all 8 points).
+   subroutine evaluate_local(name, material, problem, alpha, state_old, state_new, point, error)
+      character(len=*), intent(in) :: name
+      class(material_t), intent(in) :: material
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: alpha(:)
+      real(dp), intent(in) :: state_old(:, :)
+      real(dp), intent(inout) :: state_new(:, :)
+      type(local_point_t), intent(out) :: point
+      type(error_t), allocatable, intent(out) :: error
+      integer :: g, n
+      n = problem%n
+      do g = 1, 8
+         point%total(:, g) = problem%compatible(:, g) + matmul(problem%enhanced(:, 1:n, g), alpha(1:n))
+      end do
+      call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
+                         point%moduli, error)
+      if (allocated(error)) return
+      point%residual(1:n) = 0.0_dp
+      point%scale(1:n) = 0.0_dp
+      point%floor_scale(1:n) = 0.0_dp
+      do g = 1, 8
+         point%residual(1:n) = point%residual(1:n) + &
+                               problem%volume(g)*matmul(point%pk2(:, g), problem%enhanced(:, 1:n, g))
+         point%scale(1:n) = point%scale(1:n) + problem%volume(g)*maxval(abs(point%pk2(:, g)))* &
+                            sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
+         point%floor_scale(1:n) = point%floor_scale(1:n) + problem%volume(g)*stress_floor* &
+                                  maxval(abs(point%moduli(:, :, g)))*sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
+      end do
+   end subroutine evaluate_local
+
+   !> alpha <- alpha + s d along the Newton direction d = -K_aa^{-1} h. With the slope
+   !> phi(s) = d . h(alpha + s d), phi(0) = -d . K_aa d, which is negative where K_aa is
+   !> positive definite: the full step s = 1 is taken when phi(1) <= line_search_ratio
+   !> |phi(0)|, as in a converging Newton iteration; otherwise the step overshot the root of
+   !> phi (a point that switched between elastic and plastic response, say) and s is sought in
+   !> (0, 1) by the Illinois variant of regula falsi until |phi(s)| <= line_search_ratio
+   !> |phi(0)| (the line search of Crisfield, Non-linear FE analysis of solids and structures,
+   !> vol. 1, 9.3, on the local equations). For an associated law h is the gradient of the
+   !> element's incremental energy in alpha, the root of phi its minimum along d, so the
+   !> iteration cannot cycle as the bare Newton steps can. Where phi(0) >= 0 (K_aa indefinite:
+   !> a finite-strain law far from equilibrium) the step is halved instead until
+   !> |h(s)| <= (1 - s/2) |h(0)| (Armijo's rule on |h|, for which the Newton step is a descent
+   !> direction whatever K_aa; Dennis & Schnabel, Numerical Methods for Unconstrained
+   !> Optimization and Nonlinear Equations, 6.3). A trial after which the material fails
+   !> (det C <= 0 under a large plastic flow, say) counts as an overshoot. After
+   !> max_line_search_trials the last admissible trial is kept.
+   subroutine enhanced_line_search(name, material, problem, direction, state_old, state_new, alpha, &
+                                   point, error)
+      character(len=*), intent(in) :: name
+      class(material_t), intent(in) :: material
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: direction(:)
+      real(dp), intent(in) :: state_old(:, :)
+      real(dp), intent(inout) :: state_new(:, :)
+      real(dp), intent(inout) :: alpha(:)
+      type(local_point_t), intent(inout) :: point   !! at alpha on entry, at the new alpha on return
+      type(error_t), allocatable, intent(out) :: error
+      type(local_point_t) :: trial
+      type(line_search_t) :: search
+      integer :: k, n
+      logical :: failed
+      n = problem%n
+      call search%start(dot_product(direction, point%residual(1:n)), norm2(point%residual(1:n)))
+      do k = 1, max_line_search_trials
+         call try_step(name, material, problem, alpha(1:n) + search%s*direction, state_old, state_new, &
+                       trial, failed)
+         if (.not. failed) point = trial
+         if (search%accepts(failed, dot_product(direction, trial%residual(1:n)), &
+                            norm2(trial%residual(1:n)), k == max_line_search_trials)) exit
+      end do
+      if (search%kept_s /= search%s .or. failed) then
+         ! state_new must belong to the kept alpha, not to the last trial
+         if (.not. (search%kept_s > 0.0_dp)) search%kept_s = search%s
+         call evaluate_local(name, material, problem, alpha(1:n) + search%kept_s*direction, state_old, &
+                             state_new, point, error)
+         if (allocated(error)) return
+      end if
+      alpha(1:n) = alpha(1:n) + search%kept_s*direction
+   end subroutine enhanced_line_search
+
+   !> evaluate_local at alpha that reports the material's failure as `failed`.
+   subroutine try_step(name, material, problem, alpha, state_old, state_new, trial, failed)
+      character(len=*), intent(in) :: name
+      class(material_t), intent(in) :: material
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: alpha(:)
+      real(dp), intent(in) :: state_old(:, :)
+      real(dp), intent(inout) :: state_new(:, :)
+      type(local_point_t), intent(out) :: trial
+      logical, intent(out) :: failed
+      type(error_t), allocatable :: trial_error
+      call evaluate_local(name, material, problem, alpha, state_old, state_new, trial, trial_error)
+      failed = allocated(trial_error)
+   end subroutine try_step
+
+   !> Start a line search (see enhanced_line_search): first trial s = 1.
+   pure subroutine line_search_start(self, slope0, norm0)
+      class(line_search_t), intent(inout) :: self
+      real(dp), intent(in) :: slope0   !! phi(0) = d . h(alpha)
+      real(dp), intent(in) :: norm0    !! |h(alpha)|
+      self%slope0 = slope0
+      self%norm0 = norm0
+      self%energy = slope0 < 0.0_dp
+      self%low = 0.0_dp
+      self%slope_low = slope0
+      self%high = 0.0_dp   ! none yet
+      self%slope_high = huge(1.0_dp)
+      self%side = 0
+      self%s = 1.0_dp
+      self%kept_s = 0.0_dp
+   end subroutine line_search_start
+
+   !> Judge the trial at s: true when it ends the search (then kept_s = s), else the next s.
+   !> `failed`: the material failed at s; `slope` = phi(s), `norm` = |h(s)|; `last`: no trial
+   !> follows (the last admissible one is kept).
+   logical function line_search_accepts(self, failed, slope, norm, last) result(done)
+      class(line_search_t), intent(inout) :: self
+      logical, intent(in) :: failed, last
+      real(dp), intent(in) :: slope, norm
+      if (.not. failed) self%kept_s = self%s
+      if (self%energy) then
+         done = .not. failed .and. (abs(slope) <= line_search_ratio*abs(self%slope0) .or. &
+                                    (slope < 0.0_dp .and. self%s >= max_step_length))
+      else
+         done = .not. failed .and. norm <= (1.0_dp - 0.5_dp*self%s)*self%norm0
+      end if
+      if (done .or. (last .and. self%kept_s > 0.0_dp)) then
+         done = .true.
+      else if (self%energy) then
+         call next_energy_trial(self, failed, slope)
+      else
+         self%s = 0.5_dp*self%s
+      end if
+   end function line_search_accepts
+
+   !> The next s of the regula falsi on phi: the bracket [low, high] narrowed by the trial at
+   !> s (phi(s) > 0 or a failed material: s is the new high; else the new low), the Illinois
+   !> rule halving the slope of an end kept twice, the new s kept bracket_guard of the width
+   !> away from both ends (after a failed material the low end + bracket_guard width: where
+   !> phi rises by orders of magnitude within the bracket the trials shrink it tenfold each);
+   !> without a high end yet the step doubles.
+   pure subroutine next_energy_trial(self, failed, slope)
+      class(line_search_t), intent(inout) :: self
+      logical, intent(in) :: failed
+      real(dp), intent(in) :: slope
+      real(dp) :: next, width
+      if (failed .or. slope > 0.0_dp) then
+         if (self%side == 1 .and. .not. failed) self%slope_low = 0.5_dp*self%slope_low
+         self%high = self%s
+         self%slope_high = merge(huge(1.0_dp), slope, failed)
+         self%side = 1
+      else
+         if (self%side == -1 .and. self%slope_high < huge(1.0_dp)) self%slope_high = 0.5_dp*self%slope_high
+         self%low = self%s
+         self%slope_low = slope
+         self%side = -1
+      end if
+      if (.not. (self%high > self%low)) then
+         self%s = min(2.0_dp*self%s, max_step_length)
+         return
+      end if
+      width = self%high - self%low
+      next = self%low + bracket_guard*width
+      if (self%slope_high < huge(1.0_dp)) next = self%low - self%slope_low*width/(self%slope_high - self%slope_low)
+      self%s = min(max(next, self%low + bracket_guard*width), self%high - bracket_guard*width)
+   end subroutine next_energy_trial
+
+
+   !> K_aa = sum_g G^T C G dV.
+   pure subroutine enhanced_stiffness(problem, moduli, stiffness)
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: moduli(6, 6, 8)
+      real(dp), intent(out) :: stiffness(:, :)
+      real(dp) :: weighted(6, max_eas_modes)
+      integer :: g, n
+      n = problem%n
+      stiffness(1:n, 1:n) = 0.0_dp
+      do g = 1, 8
+         weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
+         stiffness(1:n, 1:n) = stiffness(1:n, 1:n) + matmul(transpose(problem%enhanced(:, 1:n, g)), &
+                                                           weighted(:, 1:n))
+      end do
+   end subroutine enhanced_stiffness
+
+   !> Solve K_aa X = B (B <- X) with K_aa scaled symmetrically by D = diag(|K_aa|)^{-1/2}:
+   !> (D K_aa D) (D^{-1} X) = D B. The enhanced modes of a thin, long element differ in size by
+   !> (thickness / length)^2 in G and by its square in K_aa (1e-9 at an aspect ratio of 150),
+   !> which the scaling removes before the pivoting and the singularity test of solve_in_place
+   !> see them (Jacobi equilibration: Golub & Van Loan, Matrix Computations, 3.5.2).
+   pure subroutine solve_scaled(stiffness, rhs, singular)
+      real(dp), intent(inout) :: stiffness(:, :)   !! K_aa, destroyed
+      real(dp), intent(inout) :: rhs(:, :)
+      logical, intent(out) :: singular
+      real(dp) :: factor(size(stiffness, 1))
+      integer :: i
+      singular = .true.
+      do i = 1, size(stiffness, 1)
+         if (.not. (abs(stiffness(i, i)) > 0.0_dp)) return
+         factor(i) = 1.0_dp/sqrt(abs(stiffness(i, i)))
+      end do
+      do i = 1, size(stiffness, 1)
+         stiffness(:, i) = factor*stiffness(:, i)*factor(i)
+         rhs(i, :) = factor(i)*rhs(i, :)
+      end do
+      call solve_in_place(stiffness, rhs, singular)
+      if (singular) return
+      do i = 1, size(stiffness, 1)
+         rhs(i, :) = factor(i)*rhs(i, :)
+      end do
+   end subroutine solve_scaled
 
    !> fint_a = sum_g (F S) Grad N_a dV (F = I under linear kinematics, S = sigma).
    pure subroutine internal_force(dn_dx, volume, deformation, pk2, fint)
@@ -518,35 +763,34 @@ contains
    !> Static condensation K <- K - K_ua K_aa^{-1} K_au with K_ua = sum_g B^T C G dV,
    !> K_au = sum_g G^T C B dV and K_aa = sum_g G^T C G dV at the converged alpha (for a
    !> symmetric C, K_au = K_ua^T).
-   subroutine condense(name, n, dn_dx, volume, deformation, moduli, enhanced, symmetric, tangent, error)
+   subroutine condense(name, problem, dn_dx, deformation, moduli, symmetric, tangent, error)
       character(len=*), intent(in) :: name
-      integer, intent(in) :: n
-      real(dp), intent(in) :: dn_dx(3, 8, 8), volume(8), deformation(3, 3, 8), moduli(6, 6, 8)
-      real(dp), intent(in) :: enhanced(:, :, :)
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: dn_dx(3, 8, 8), deformation(3, 3, 8), moduli(6, 6, 8)
       logical, intent(in) :: symmetric
       real(dp), intent(inout) :: tangent(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: coupling(24, max_eas_modes), solved(max_eas_modes, 24)
       real(dp) :: stiffness(max_eas_modes, max_eas_modes), weighted(6, max_eas_modes), b_nl(6, 3, 8)
-      integer :: g, a
+      integer :: g, a, n
       logical :: singular
+      n = problem%n
       coupling(:, 1:n) = 0.0_dp
       solved(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
-      stiffness(1:n, 1:n) = 0.0_dp
+      call enhanced_stiffness(problem, moduli, stiffness(1:n, 1:n))
       do g = 1, 8
          call nonlinear_b(deformation(:, :, g), dn_dx(:, :, g), b_nl)
-         weighted(:, 1:n) = volume(g)*matmul(moduli(:, :, g), enhanced(:, 1:n, g))
-         stiffness(1:n, 1:n) = stiffness(1:n, 1:n) + matmul(transpose(enhanced(:, 1:n, g)), weighted(:, 1:n))
+         weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
          do a = 1, 8
             coupling(3*a - 2:3*a, 1:n) = coupling(3*a - 2:3*a, 1:n) + &
                                          matmul(transpose(b_nl(:, :, a)), weighted(:, 1:n))
             if (.not. symmetric) solved(1:n, 3*a - 2:3*a) = solved(1:n, 3*a - 2:3*a) + &
-                                 volume(g)*matmul(transpose(enhanced(:, 1:n, g)), &
-                                                  matmul(moduli(:, :, g), b_nl(:, :, a)))
+                                 problem%volume(g)*matmul(transpose(problem%enhanced(:, 1:n, g)), &
+                                                          matmul(moduli(:, :, g), b_nl(:, :, a)))
          end do
       end do
       if (symmetric) solved(1:n, :) = transpose(coupling(:, 1:n))
-      call solve_in_place(stiffness(1:n, 1:n), solved(1:n, :), singular)
+      call solve_scaled(stiffness(1:n, 1:n), solved(1:n, :), singular)
       if (singular) then
          call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
          return

@@ -2,10 +2,12 @@
 program test_elements
    use frix_testing, only: run_suites, new_testsuite
    use test_hex8, only: collect_hex8
+   use test_hex8_thin, only: collect_hex8_thin
    use test_element_registry, only: collect_element_registry
    use test_surface_load, only: collect_surface_load
    implicit none
    call run_suites([new_testsuite('hex8', collect_hex8), &
+                    new_testsuite('hex8_thin', collect_hex8_thin), &
                     new_testsuite('element_registry', collect_element_registry), &
                     new_testsuite('surface_load', collect_surface_load)])
 end program test_elements

@@ -20,7 +20,7 @@ module test_hex8
    implicit none
    private
 
-   public :: collect_hex8
+   public :: collect_hex8, check_tangent
 
    real(dp), parameter :: young = 1000.0_dp      !! stress unit of all tests
    real(dp), parameter :: poisson = 0.3_dp
@@ -220,16 +220,19 @@ contains
       call check(error, all(state_new(2, :) == 1.0_dp), element%name//': not every point yields')
    end subroutine check_all_plastic
 
-   !> K against central differences of fint over all 24 dofs on the distorted element; each
-   !> perturbed evaluation starts its local EAS solve from the alpha of the base state.
+   !> K against central differences of fint over all 24 dofs on the distorted element (or on
+   !> `geometry` with the displacements `displacement` and the difference step `step`, for
+   !> elements of other sizes); each perturbed evaluation starts its local EAS solve from the
+   !> alpha of the base state.
    !> Also checks that K is symmetric (hyperelastic material, symmetric condensation), or with
    !> `symmetric` false that it is not (by more than 1e-3 max|K|).
-   subroutine check_tangent(element, material, amplitude, error, symmetric)
+   subroutine check_tangent(element, material, amplitude, error, symmetric, geometry, displacement, step_size)
       type(hex8_t), intent(in) :: element
       class(material_t), intent(in) :: material
-      real(dp), intent(in) :: amplitude
+      real(dp), intent(in) :: amplitude   !! of sample_displacement (unused with `displacement`)
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: symmetric
+      real(dp), intent(in), optional :: geometry(3, 8), displacement(3, 8), step_size
       real(dp) :: coords(3, 8), u(3, 8), perturbed(3, 8), fint(24), plus(24), minus(24)
       real(dp) :: tangent(24, 24), difference(24, 24)
       real(dp) :: state_old(material%n_state(), 8), state_new(material%n_state(), 8)
@@ -237,12 +240,15 @@ contains
       integer :: a, i, column
       state_old = 0.0_dp
       coords = distorted_coords()
+      if (present(geometry)) coords = geometry
       u = sample_displacement(amplitude)
+      if (present(displacement)) u = displacement
       alpha = 0.0_dp
       call element%evaluate(material, coords, u, alpha, state_old, state_new, fint, tangent=tangent, &
                             error=error)
       if (allocated(error)) return
       step = fd_step*element_size
+      if (present(step_size)) step = step_size
       do a = 1, 8
          do i = 1, 3
             column = 3*(a - 1) + i
