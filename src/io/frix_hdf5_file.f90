@@ -105,6 +105,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: waited, limit
       integer :: status
+      logical :: exists
+      inquire (file=path, exist=exists)
+      if (.not. exists) then
+         call fatal_error(error, 'HDF5: results file "'//path//'" no longer exists, cannot write an increment')
+         return
+      end if
       waited = 0.0_dp
       limit = lock_wait()
       do
