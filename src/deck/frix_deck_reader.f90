@@ -8,11 +8,10 @@
 !> reference points backwards: controls, curves, materials; the mesh (MESH FILE, NODE COORDS,
 !> element lines of STRUCTURE ELEMENTS, MESH BLOCK, then the SET lines of STRUCTURE ELEMENTS);
 !> NODE SETS, SURFACES; conditions and loads; CONTACT CONDITIONS; COUPLINGS; STEPS; RESULTS;
-!> then, in a valid model (mesh,
-!> materials and element blocks complete), the automatic contact penalties, the ties' nodes
-!> and the supports against rigid-body motion (frix_deck_supports). Each section has its reader in
-!> a module of its own (frix_deck_controls, _properties, _mesh, _loads, _contact, _couplings,
-!> _results).
+!> then, in a valid model (mesh, materials and element blocks complete), the automatic contact
+!> penalties, the ties' nodes and the supports against rigid-body motion (frix_deck_supports).
+!> Each section has its reader in a module of its own (frix_deck_controls, _properties, _mesh,
+!> _loads, _contact, _couplings, _results).
 module frix_deck_reader
    use frix_error, only: error_t
    use frix_strings, only: to_string

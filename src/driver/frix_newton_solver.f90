@@ -724,20 +724,25 @@ contains
    !> equation, which a relative test cannot beat when the load is small (the first small
    !> increments of a cut-back with stiff penalties). Returns roundoff_factor times
    !> epsilon ||K_ii |x_i| || over the free equations, with the diagonal of the tangent just
-   !> assembled (context%diagonal) and x = X + u the current coordinates.
+   !> assembled (context%diagonal) and x = X + u the current coordinates (for the rotation node
+   !> of a kinematic coupling, whose coordinates are no position, x = u = theta).
    function roundoff_floor(model, context, u) result(floor)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(in) :: context
       real(dp), intent(in) :: u(:)
       real(dp) :: floor
       real(dp), parameter :: roundoff_factor = 10.0_dp
+      logical, allocatable :: rotation(:)
       integer :: node, i, equation
+      allocate (rotation(model%mesh%n_nodes), source=.false.)
+      if (allocated(model%couplings)) rotation(model%couplings%rotation_node) = .true.
       floor = 0.0_dp
       do node = 1, model%mesh%n_nodes
          do i = 1, 3
             equation = 3*(node - 1) + i
             if (context%fixed(equation)) cycle
-            floor = floor + (context%diagonal(equation)*(model%mesh%coords(i, node) + u(equation)))**2
+            floor = floor + (context%diagonal(equation)* &
+                             (merge(0.0_dp, model%mesh%coords(i, node), rotation(node)) + u(equation)))**2
          end do
       end do
       floor = roundoff_factor*epsilon(1.0_dp)*sqrt(floor)
