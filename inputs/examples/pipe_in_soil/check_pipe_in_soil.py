@@ -9,7 +9,8 @@
   ((3 - 4 nu) ln(b/a) - (b^2 - a^2)/(b^2 + a^2)), the stiffness per unit length of a rigid
   disc of radius a = 0.5 bonded in a plane-strain elastic annulus held at radius b = 2 (the
   circle inscribed in the block; the laterally loaded pile of Baguelin, Frank & Said 1977,
-  Geotechnique 27(3)). An estimate, not a bound: the model's pipe separates from the soil
+  Geotechnique 27(3), quoted as recalled and not checked against the paper: an order of
+  magnitude, hence the wide range). An estimate, not a bound: the model's pipe separates from the soil
   behind it and slides along it (mu = 0.3), and the block's top is free, all of which make it
   softer; measured P / P_annulus = 0.33;
 - every pipe node moved by u_x = 0.02 at the ends (the prescribed pull) and the soil's
