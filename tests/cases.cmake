@@ -207,3 +207,6 @@ add_test(NAME hdf5_disk_full
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hdf5/disk_full_test.sh ${FRIX_BIN}
                  ${CMAKE_CURRENT_SOURCE_DIR}/io/write_failure.dck)
 set_tests_properties(hdf5_disk_full PROPERTIES LABELS regression SKIP_RETURN_CODE 77 TIMEOUT ${scaled_60})
+
+# Thin, long EAS elements (tests/eas_thin)
+include(${CMAKE_CURRENT_SOURCE_DIR}/eas_thin/eas_thin.cmake)
