@@ -261,3 +261,5 @@ add_test(NAME tutorial_pipe_in_soil
 set_tests_properties(tutorial_pipe_in_soil PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
 # Kinematic couplings (tests/coupling).
 include(${CMAKE_CURRENT_SOURCE_DIR}/coupling/coupling.cmake)
+# Thin, long EAS elements (tests/eas_thin)
+include(${CMAKE_CURRENT_SOURCE_DIR}/eas_thin/eas_thin.cmake)

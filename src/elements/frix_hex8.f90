@@ -484,20 +484,20 @@ contains
 
    !> alpha <- alpha + s d along the Newton direction d = -K_aa^{-1} h. With the slope
    !> phi(s) = d . h(alpha + s d), phi(0) = -d . K_aa d, which is negative where K_aa is
-   !> positive definite: the full step s = 1 is taken when phi(1) <= line_search_ratio
-   !> |phi(0)|, as in a converging Newton iteration; otherwise the step overshot the root of
-   !> phi (a point that switched between elastic and plastic response, say) and s is sought in
-   !> (0, 1) by the Illinois variant of regula falsi until |phi(s)| <= line_search_ratio
-   !> |phi(0)| (the line search of Crisfield, Non-linear FE analysis of solids and structures,
-   !> vol. 1, 9.3, on the local equations). For an associated law h is the gradient of the
-   !> element's incremental energy in alpha, the root of phi its minimum along d, so the
-   !> iteration cannot cycle as the bare Newton steps can. Where phi(0) >= 0 (K_aa indefinite:
-   !> a finite-strain law far from equilibrium) the step is halved instead until
-   !> |h(s)| <= (1 - s/2) |h(0)| (Armijo's rule on |h|, for which the Newton step is a descent
-   !> direction whatever K_aa; Dennis & Schnabel, Numerical Methods for Unconstrained
-   !> Optimization and Nonlinear Equations, 6.3). A trial after which the material fails
-   !> (det C <= 0 under a large plastic flow, say) counts as an overshoot. After
-   !> max_line_search_trials the last admissible trial is kept.
+   !> positive definite: the full step s = 1 is taken when |phi(1)| <= line_search_ratio
+   !> |phi(0)|, as in a converging Newton iteration; otherwise s is sought where |phi(s)| <=
+   !> line_search_ratio |phi(0)| by the Illinois variant of regula falsi (next_energy_trial;
+   !> s doubles up to max_step_length while phi stays negative): the line search of Crisfield,
+   !> Non-linear FE analysis of solids and structures, vol. 1, 9.3, on the local equations. For
+   !> an associated law h is the gradient of the element's incremental energy in alpha and the
+   !> root of phi its minimum along d, so the iteration cannot cycle between two alphas as the
+   !> bare Newton steps can where points switch between elastic and plastic response. Where
+   !> phi(0) >= 0 (K_aa indefinite: a finite-strain law with little hardening far from
+   !> equilibrium) the step is halved instead until |h(s)| <= (1 - s/2) |h(0)| (Armijo's rule
+   !> on |h|, for which the Newton step is a descent direction whatever K_aa; Dennis & Schnabel,
+   !> Numerical Methods for Unconstrained Optimization and Nonlinear Equations, 6.3). A trial
+   !> after which the material fails (det C <= 0 under a large plastic flow, say) counts as an
+   !> overshoot. After max_line_search_trials the last admissible trial is kept.
    subroutine enhanced_line_search(name, material, problem, direction, state_old, state_new, alpha, &
                                    point, error)
       character(len=*), intent(in) :: name
@@ -511,6 +511,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(local_point_t) :: trial
       type(line_search_t) :: search
+      real(dp) :: slope, norm
       integer :: k, n
       logical :: failed
       n = problem%n
@@ -518,9 +519,14 @@ contains
       do k = 1, max_line_search_trials
          call try_step(name, material, problem, alpha(1:n) + search%s*direction, state_old, state_new, &
                        trial, failed)
-         if (.not. failed) point = trial
-         if (search%accepts(failed, dot_product(direction, trial%residual(1:n)), &
-                            norm2(trial%residual(1:n)), k == max_line_search_trials)) exit
+         slope = 0.0_dp
+         norm = 0.0_dp
+         if (.not. failed) then
+            point = trial
+            slope = dot_product(direction, trial%residual(1:n))
+            norm = norm2(trial%residual(1:n))
+         end if
+         if (search%accepts(failed, slope, norm, k == max_line_search_trials)) exit
       end do
       if (search%kept_s /= search%s .or. failed) then
          ! state_new must belong to the kept alpha, not to the last trial
