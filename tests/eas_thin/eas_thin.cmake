@@ -1,4 +1,4 @@
-# Thin, long EAS elements (docs/elements.md, "The local alpha iteration"): a plane strain quarter
+# Thin, long EAS elements (docs/elements.md, "Static condensation and the local alpha iteration"): a plane strain quarter
 # of a steel pipe, a = 0.24 m, b = 0.25 m (wall 10 mm), 2 elements through the wall, 16 around,
 # 1 along z of 0.75 m: aspect ratio 150, SI units (tests/eas_thin/thin_pipe.msh, written by
 # inputs/meshes/ring_mesh.py). HEX8 and HEX8 EAS 9 alike must converge without cut-back
