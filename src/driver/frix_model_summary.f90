@@ -54,31 +54,42 @@ contains
    !> The named node sets, element sets and surfaces, one line each kind: "name (size)".
    function named_sizes(model) result(text)
       type(model_t), intent(in) :: model
-      character(len=:), allocatable :: text, list
+      character(len=:), allocatable :: text
       integer :: k
       text = ''
-      if (allocated(model%mesh%node_sets)) then
-         list = ''
-         do k = 1, size(model%mesh%node_sets)
-            list = list//' '//model%mesh%node_sets(k)%name//' ('//to_string(size(model%mesh%node_sets(k)%nodes))//')'
-         end do
-         if (size(model%mesh%node_sets) > 0) text = text//'  node sets (nodes):'//list//new_line('a')
-      end if
-      if (allocated(model%mesh%element_sets)) then
-         list = ''
-         do k = 1, size(model%mesh%element_sets)
-            list = list//' '//model%mesh%element_sets(k)%name//' ('// &
-                   to_string(size(model%mesh%element_sets(k)%elements))//')'
-         end do
-         if (size(model%mesh%element_sets) > 0) text = text//'  element sets (elements):'//list//new_line('a')
-      end if
-      if (allocated(model%mesh%surfaces)) then
-         list = ''
-         do k = 1, size(model%mesh%surfaces)
-            list = list//' '//model%mesh%surfaces(k)%name//' ('//to_string(size(model%mesh%surfaces(k)%faces))//')'
-         end do
-         if (size(model%mesh%surfaces) > 0) text = text//'  surfaces (faces):'//list//new_line('a')
-      end if
+      associate (mesh => model%mesh)
+         if (allocated(mesh%node_sets)) then
+            do k = 1, size(mesh%node_sets)
+               call add_entry('  node sets (nodes):', k, mesh%node_sets(k)%name, size(mesh%node_sets(k)%nodes))
+            end do
+            call end_line(size(mesh%node_sets))
+         end if
+         if (allocated(mesh%element_sets)) then
+            do k = 1, size(mesh%element_sets)
+               call add_entry('  element sets (elements):', k, mesh%element_sets(k)%name, &
+                              size(mesh%element_sets(k)%elements))
+            end do
+            call end_line(size(mesh%element_sets))
+         end if
+         if (allocated(mesh%surfaces)) then
+            do k = 1, size(mesh%surfaces)
+               call add_entry('  surfaces (faces):', k, mesh%surfaces(k)%name, size(mesh%surfaces(k)%faces))
+            end do
+            call end_line(size(mesh%surfaces))
+         end if
+      end associate
+   contains
+      !> " name (size)", after the line's head for the first entry (k = 1).
+      subroutine add_entry(head, k, name, n)
+         character(len=*), intent(in) :: head, name
+         integer, intent(in) :: k, n
+         if (k == 1) text = text//head
+         text = text//' '//name//' ('//to_string(n)//')'
+      end subroutine add_entry
+      subroutine end_line(n)
+         integer, intent(in) :: n
+         if (n > 0) text = text//new_line('a')
+      end subroutine end_line
    end function named_sizes
 
    !> "  contact pair <id>: slave <surface>, master <surface | rigid plane>, <kind>".
