@@ -13,10 +13,14 @@
   magnitude, hence the wide range). An estimate, not a bound: the model's pipe separates from the soil
   behind it and slides along it (mu = 0.3), and the block's top is free, all of which make it
   softer; measured P / P_annulus = 0.33;
+- the deck's HISTORY totals at the last increment: r1_sum_pipe_end0 + r1_sum_pipe_end1 = P
+  to 1e-9, the contact resultant c1_pair1 = -P to 1e-6 (the pipe is held by its ends and pushed
+  back by the soil only), the ends' mean u_x 0.02;
 - every pipe node moved by u_x = 0.02 at the ends (the prescribed pull) and the soil's
   largest u_x lies between 0 and 0.02 (pushed by the pipe, never beyond it).
 Prints P and the statics error. Exit 0 if all hold.
 """
+import csv
 import sys
 
 import h5py
@@ -44,6 +48,20 @@ def main():
     print(f"pull on the pipe's ends {pull:.6e} kN, x reactions of the soil's supports {soil:.6e} kN, "
           f"statics error {statics:.1e}")
     failed |= not (pull > 0 and statics <= 1e-6)
+
+    # the deck's HISTORY totals (the CSV beside the HDF5 file) at the last increment: the two
+    # ends' pulls add up to P, and the contact resultant on the pipe (the soil's push, along -x)
+    # balances it to the Newton tolerance
+    history = sys.argv[1][:-len(".h5")] + "_history.csv"
+    with open(history) as handle:
+        rows = list(csv.DictReader(handle))
+    last_row = {key: float(value) for key, value in rows[-1].items()}
+    ends = last_row["r1_sum_pipe_end0"] + last_row["r1_sum_pipe_end1"]
+    push = last_row["c1_pair1"]
+    print(f"history totals: r1_sum_pipe_end0 + r1_sum_pipe_end1 = {ends:.6e} kN, c1_pair1 = {push:.6e} kN, "
+          f"u1_mean_pipe_end0 = {last_row['u1_mean_pipe_end0']:.6f}")
+    failed |= not (abs(ends - pull) <= 1e-9 * abs(pull) and abs(push + pull) <= 1e-6 * abs(pull)
+                   and abs(last_row["u1_mean_pipe_end0"] - 0.02) <= 1e-12)
 
     E, nu, a, b, u_pull, length = 2.0e4, 0.3, 0.5, 2.0, 0.02, 4.0
     G = E / (2 * (1 + nu))
