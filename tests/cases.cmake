@@ -214,6 +214,10 @@ set_tests_properties(hdf5_disk_full PROPERTIES LABELS regression SKIP_RETURN_COD
 add_test(NAME check_summary_s5 COMMAND ${FRIX_BIN} --check ${PROJECT_SOURCE_DIR}/inputs/s5_buried_pipe/s5_mu0.dck)
 set_tests_properties(check_summary_s5 PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION
   "mesh: 846 nodes, 360 elements, 2538 equations.*block 1: 16 elements HEX8-EAS9 .*surfaces \\(faces\\):.* cavity \\(16\\) pipe_outer \\(16\\).*contact pair 1: slave pipe_outer, master cavity, node-to-segment, 1 pass.*steps: 1, 4 nominal increments")
+# ... and the couplings: the 20 x 2 x 2 cantilever's end face has 3 x 3 coupled nodes.
+add_test(NAME check_summary_coupling COMMAND ${FRIX_BIN} --check ${CMAKE_CURRENT_SOURCE_DIR}/coupling/cantilever_axial.dck)
+set_tests_properties(check_summary_coupling PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION
+  "coupling 1: 9 nodes to reference node 1001, rotation node 1002")
 # A run and its restart joined into one series by postproc/join_restart.py.
 add_test(NAME restart_join_series COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/join_restart_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_s1.dck ${PROJECT_SOURCE_DIR}/postproc)

@@ -43,7 +43,7 @@ module frix_contact_assembly
    private
 
    public :: contact_system_t, setup_contact, search_contact, assemble_contact, commit_contact
-   public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels
+   public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels, contact_resultant
    public :: contact_history_rows, get_contact_history, set_contact_history, restart_mortar_rows
    public :: reset_friction_branches, release_inconsistent_branches
    public :: check_ties, add_pattern_pairs
@@ -701,6 +701,33 @@ contains
          end do
       end associate
    end subroutine contact_pass_table
+
+   !> Resultant of the contact forces on the slave surface of contact pair `pair_index` (index
+   !> into model%contact_pairs), from its first pass: sum of f_i = A_i (p_i n_i + t_i) over the
+   !> slave nodes, A_i the node's tributary area, p_i its pressure (compressive positive) and
+   !> t_i its tangential traction as written (interface_traction: with PASSES 2 the
+   !> interface's), n_i the unit normal out of the master body. Component 1..3 of the
+   !> resultant, or 0: the normal force sum A_i p_i. Statics: the resultant on the slave body
+   !> balances the other loads on that body. 0 for a pair without a pass.
+   real(dp) function contact_resultant(system, pair_index, component) result(value)
+      type(contact_system_t), intent(in) :: system
+      integer, intent(in) :: pair_index, component
+      real(dp) :: pressure, traction(3)
+      integer :: p, i
+      value = 0.0_dp
+      p = findloc(system%passes%pair, pair_index, dim=1)
+      if (p == 0) return
+      associate (pass => system%passes(p))
+         do i = 1, size(pass%slave_nodes)
+            call interface_traction(pass, i, pressure, traction)
+            if (component == 0) then
+               value = value + pass%area(i)*pressure
+            else
+               value = value + pass%area(i)*(pressure*pass%result(i)%normal(component) + traction(component))
+            end if
+         end do
+      end associate
+   end function contact_resultant
 
    !> The committed slip history of pass p as a real table (contact_history_rows, n_slave) for
    !> restart files: anchor face, anchor face coordinates (2), anchor point (3, rigid plane;

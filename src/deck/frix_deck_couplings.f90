@@ -37,7 +37,7 @@ contains
             if (ok) call check_roles(reader, model, line, coupling, ok)
             if (ok) call check_coupled_nodes(reader, model, line, coupling, ok)
             if (.not. ok) cycle
-            coupling%line = i
+            coupling%line = line%number
             model%couplings = [model%couplings, coupling]
          end associate
       end do

@@ -1,8 +1,8 @@
 !> What `frix --check` found in a valid deck (docs/deck-format.md, "Checking a deck"): the
 !> mesh's sizes, each element block with its formulation and material, the named node sets,
-!> element sets and surfaces with their sizes, the contact pairs, the loads and the steps, so
-!> that a user sees at once whether gmsh's physical groups, the deck's sets and the pairs are
-!> what was meant.
+!> element sets and surfaces with their sizes, the contact pairs and kinematic couplings, the
+!> loads and the steps, so that a user sees at once whether gmsh's physical groups, the deck's
+!> sets and the pairs are what was meant.
 module frix_model_summary
    use frix_strings, only: to_string
    use frix_element, only: kinematics_name
@@ -29,6 +29,15 @@ contains
       do k = 1, size(model%contact_pairs)
          text = text//pair_line(model, k)//nl
       end do
+      if (allocated(model%couplings)) then
+         do k = 1, size(model%couplings)
+            associate (coupling => model%couplings(k))
+               text = text//'  coupling '//to_string(coupling%id)//': '//to_string(size(coupling%nodes))// &
+                      ' nodes to reference node '//to_string(model%mesh%node_ids(coupling%reference_node))// &
+                      ', rotation node '//to_string(model%mesh%node_ids(coupling%rotation_node))//nl
+            end associate
+         end do
+      end if
       text = text//'  loads: '//to_string(size(model%dirichlet))//' prescribed-displacement lines, '// &
              to_string(size(model%nodal_forces))//' nodal-force lines, '//to_string(size(model%pressures))// &
              ' pressures, '//to_string(size(model%body_forces))//' body forces, '// &

@@ -20,7 +20,7 @@ module frix_results_collection
    use frix_increment_results, only: increment_results_t, named_field_t, contact_pass_results_t
    use frix_normal_contact_law, only: augmentation_t
    use frix_contact_parameters, only: contact_parameters_t
-   use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, &
+   use frix_contact_assembly, only: contact_nodal_fields, contact_pass_table, contact_table_labels, contact_resultant, &
                                     get_contact_history
    implicit none
    private
@@ -89,7 +89,9 @@ contains
          associate (request => model%results%history(r))
             select case (request%kind)
             case ('C')
-               results%history_values(r) = contact_resultant(state, results, request%pair, request%component)
+               results%history_values(r) = 0.0_dp
+               if (state%has_contact) results%history_values(r) = &
+                  contact_resultant(state%contact, request%pair, request%component)
             case ('R')
                results%history_values(r) = nodal_value(request, results%reaction)
             case default
@@ -113,35 +115,6 @@ contains
          value = field(request%component, request%node)
       end select
    end function nodal_value
-
-   !> Resultant of the contact forces on the slave surface of contact pair `pair` (index into
-   !> model%contact_pairs), from its first pass: sum of f_i = A_i (p_i n_i + t_i) over the slave
-   !> nodes, A_i the node's tributary area, p_i its pressure (compressive positive), t_i its
-   !> tangential traction and n_i the unit normal out of the master body (the contact table,
-   !> contact_pass_table); with PASSES 2, p_i and t_i are the interface's (both passes'
-   !> forces on the node). Component 1..3 of the resultant, or 0: the normal force sum A_i p_i.
-   !> Statics: the resultant on the slave body balances the other loads on that body.
-   real(dp) function contact_resultant(state, results, pair, component) result(value)
-      type(analysis_state_t), intent(in) :: state
-      type(increment_results_t), intent(in) :: results
-      integer, intent(in) :: pair, component
-      integer :: p, i
-      value = 0.0_dp
-      if (.not. state%has_contact) return
-      do p = 1, size(state%contact%passes)
-         if (state%contact%passes(p)%pair == pair) exit
-      end do
-      if (p > size(state%contact%passes)) return
-      associate (pass => state%contact%passes(p), table => results%contact(p)%values)
-         do i = 1, size(pass%slave_nodes)
-            if (component == 0) then
-               value = value + pass%area(i)*table(2, i)
-            else
-               value = value + pass%area(i)*(table(2, i)*pass%result(i)%normal(component) + table(2 + component, i))
-            end if
-         end do
-      end associate
-   end function contact_resultant
 
    !> Stresses and strains at the integration points (one element pass), the materials'
    !> named history variables, and the committed state for restarts.

@@ -11,6 +11,7 @@ module test_tie_constraints
    use frix_contact_pass, only: contact_pass_t
    use frix_constraint_equations, only: constraint_equations_t
    use frix_tie_constraints, only: add_tie_equations
+   use elimination_checks, only: check_elimination
    implicit none
    private
 
@@ -141,9 +142,8 @@ contains
       type(sparse_matrix_t) :: matrix
       type(contact_pass_t) :: pass(1)
       type(constraint_equations_t) :: constraints
-      real(dp) :: dense(n, n), t(n, n), expected(n, n), v(n), u(n), got(n)
+      real(dp) :: dense(n, n), t(n, n)
       logical :: dependent(n)
-      type(error_t), allocatable :: failure
       integer :: i, j, connectivity(6, 1)
       connectivity(:, 1) = [1, 2, 3, 4, 5, 6]
       call matrix%create_node_block_pattern(6, connectivity)
@@ -172,31 +172,6 @@ contains
          t(12 + i, [1, 2, 3, 4]*3 - 3 + i) = [0.1_dp, 0.2_dp, 0.3_dp, 0.4_dp]
          if (i < 3) t(15 + i, [2, 3, 4]*3 - 3 + i) = [0.5_dp, -0.25_dp, 0.75_dp]
       end do
-      expected = matmul(transpose(t), matmul(dense, t))
-      call constraints%condense_matrix(dependent, matrix, failure)
-      call check(error, .not. allocated(failure), 'every pair in the pattern')
-      if (allocated(error)) return
-      do j = 1, n
-         do i = 1, n
-            call check_close(error, matrix%entry(i, j), expected(i, j), 0.0_dp, 1.0e-13_dp, 'T^T K T')
-            if (allocated(error)) return
-         end do
-      end do
-      v = [(cos(real(i, dp)), i=1, n)]
-      got = v
-      call constraints%condense_vector(dependent, got)
-      do i = 1, n
-         call check_close(error, got(i), dot_product(t(:, i), v), 0.0_dp, 1.0e-14_dp, 'T^T v')
-         if (allocated(error)) return
-      end do
-      u = v
-      u(13:17) = 0.0_dp
-      got = u
-      call constraints%expand_vector(dependent, got)
-      do i = 1, n
-         call check_close(error, got(i), dot_product(t(i, :), u), &
-                          0.0_dp, 1.0e-14_dp, 'T u')
-         if (allocated(error)) return
-      end do
+      call check_elimination(constraints, dependent, matrix, dense, t, 1.0e-13_dp, 1.0e-14_dp, error)
    end subroutine test_elimination
 end module test_tie_constraints
