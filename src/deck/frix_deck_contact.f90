@@ -18,7 +18,7 @@ module frix_deck_contact
    use frix_model, only: model_t, contact_pair_t
    use frix_surface_stiffness, only: surface_stiffness
    use frix_deck_tokens, only: deck_line_t
-   use frix_deck_context, only: deck_reader_t, require, s_contact
+   use frix_deck_context, only: deck_reader_t, require, resume_position, s_contact
    implicit none
    private
 
@@ -27,6 +27,11 @@ module frix_deck_contact
    !> NORMALS choices (0: not given, Auto for a deformable master)
    integer, parameter :: normals_default = 0, normals_facet = 1, normals_smoothed = 2, normals_auto = 3
    character(len=8), parameter :: normals_names(3) = [character(len=8) :: 'Facet', 'Smoothed', 'Auto']
+
+   !> The keywords of a pair's options besides the laws' properties (read_pair_option).
+   character(len=14), parameter :: pair_keywords(14) = [character(len=14) :: 'POINT', 'NORMAL', 'EPST', &
+      'PENALTY_FACTOR', 'GAPTOL', 'PASSES', 'METHOD', 'TMETHOD', 'PREDICT', 'STICKTOL', 'LAW', 'NORMALS', &
+      'DISCRETIZATION', 'FEATURE_ANGLE']
 
    !> What a pair's line gives after its surfaces, as read.
    type :: pair_options_t
@@ -201,6 +206,8 @@ contains
 
    !> The keywords after the surfaces, in any order: the rigid plane, the laws, their
    !> properties (as the registries describe them), GAPTOL, PASSES, NORMALS, FEATURE_ANGLE.
+   !> After a mistake (also one in the surfaces, `ok` false on entry) the line is read on from
+   !> its next keyword, so that every mistake of the line is reported.
    subroutine read_pair_options(reader, line, position, rigid, options, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(deck_line_t), intent(in) :: line
@@ -209,88 +216,112 @@ contains
       type(pair_options_t), intent(out) :: options
       logical, intent(inout) :: ok
       type(property_spec_t), allocatable :: normal_specs(:), friction_specs(:)
-      character(len=:), allocatable :: word
-      integer :: k
+      character(len=32), allocatable :: keywords(:)
+      integer :: start
+      logical :: line_ok
       normal_specs = normal_property_specs()
       friction_specs = friction_property_specs()
+      keywords = [character(len=32) :: pair_keywords, spec_names(normal_specs), spec_names(friction_specs)]
       options%rigid = rigid
       options%method = ''
       options%law = ''
       allocate (options%property_names(0), options%property_tokens(0))
-      do while (ok .and. position <= line%n_tokens())
-         word = line%keyword(position)
-         position = position + 1
-         select case (word)
-         case ('POINT')
-            call reader%take_reals(line, position, 'a coordinate', options%plane_point, ok)
-            options%has_point = ok
-         case ('NORMAL')
-            call reader%take_reals(line, position, 'a normal component', options%plane_normal, ok)
-            options%has_normal = ok
-         case ('EPST')
-            call reader%take_real(line, position, 'EPST', options%eps_t, ok)
-            call require(reader, ok, options%eps_t > 0.0_dp, line, position - 1, 'EPST must be positive')
-            options%has_eps_t = ok
-         case ('PENALTY_FACTOR')
-            options%factor_token = position
-            call reader%take_real(line, position, 'PENALTY_FACTOR', options%penalty_factor, ok)
-            call require(reader, ok, options%penalty_factor > 0.0_dp, line, position - 1, &
-                         'PENALTY_FACTOR must be positive')
-         case ('GAPTOL')
-            call reader%take_real(line, position, 'GAPTOL', options%gap_tolerance, ok)
-            call require(reader, ok, options%gap_tolerance >= 0.0_dp, line, position - 1, &
-                         'GAPTOL must not be negative')
-         case ('PASSES')
-            options%passes_token = position
-            call reader%take_integer(line, position, 'PASSES', options%passes, ok)
-            call require(reader, ok, options%passes == 1 .or. options%passes == 2, line, position - 1, &
-                         'PASSES must be 1 or 2')
-         case ('METHOD')
-            options%method_token = position
-            call reader%take_word(line, position, 'a normal contact method', options%method, ok)
-         case ('TMETHOD')
-            call read_tangential_method(reader, line, position, options, ok)
-         case ('PREDICT')
-            options%predict_token = position
-            call reader%take_yes_no(line, position, 'PREDICT', options%predict, ok)
-         case ('STICKTOL')
-            options%stick_token = position
-            call reader%take_real(line, position, 'STICKTOL', options%stick_tolerance, ok)
-            call require(reader, ok, options%stick_tolerance > 0.0_dp, line, position - 1, 'STICKTOL must be positive')
-         case ('LAW')
-            options%law_token = position
-            call reader%take_word(line, position, 'a friction law', options%law, ok)
-         case ('NORMALS')
-            call read_normals(reader, line, position, options, ok)
-         case ('DISCRETIZATION')
-            call read_discretization(reader, line, position, options, ok)
-         case ('FEATURE_ANGLE')
-            options%feature_token = position
-            call reader%take_real(line, position, 'FEATURE_ANGLE', options%feature_angle, ok)
-            call require(reader, ok, options%feature_angle > 0.0_dp .and. options%feature_angle < 180.0_dp, &
-                         line, position - 1, 'FEATURE_ANGLE must lie between 0 and 180 degrees (exclusive)')
-         case default
-            options%property_names = [character(len=32) :: options%property_names, word]
-            options%property_tokens = [options%property_tokens, position]
-            k = keyword_index(spec_names(normal_specs), word)
-            if (k > 0) then
-               call reader%take_property(line, position, normal_specs(k), options%normal, ok)
-               cycle
-            end if
-            k = keyword_index(spec_names(friction_specs), word)
-            if (k > 0) then
-               call reader%take_property(line, position, friction_specs(k), options%friction, ok)
-               cycle
-            end if
-            call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
-                               joined(spec_names(normal_specs))//', EPST, PENALTY_FACTOR, '// &
-                               joined(spec_names(friction_specs))// &
-                               ', METHOD, TMETHOD, STICKTOL, PREDICT, LAW, GAPTOL, PASSES, NORMALS, FEATURE_ANGLE '// &
-                               'or DISCRETIZATION)')
-            ok = .false.
-         end select
+      line_ok = ok
+      if (.not. ok) position = resume_position(line, position, keywords)
+      do while (position <= line%n_tokens())
+         start = position
+         ok = .true.
+         call read_pair_option(reader, line, position, normal_specs, friction_specs, options, ok)
+         if (.not. ok) then
+            line_ok = .false.
+            position = resume_position(line, max(position, start + 1), keywords)
+         end if
       end do
+      ok = line_ok
    end subroutine read_pair_options
+
+   !> One keyword of a pair's options at `position`, with its value(s), into `options`.
+   subroutine read_pair_option(reader, line, position, normal_specs, friction_specs, options, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      type(property_spec_t), intent(in) :: normal_specs(:), friction_specs(:)
+      type(pair_options_t), intent(inout) :: options
+      logical, intent(inout) :: ok
+      character(len=:), allocatable :: word
+      integer :: k
+      word = line%keyword(position)
+      position = position + 1
+      select case (word)
+      case ('POINT')
+         call reader%take_reals(line, position, 'a coordinate', options%plane_point, ok)
+         options%has_point = ok
+      case ('NORMAL')
+         call reader%take_reals(line, position, 'a normal component', options%plane_normal, ok)
+         options%has_normal = ok
+      case ('EPST')
+         call reader%take_real(line, position, 'EPST', options%eps_t, ok)
+         call require(reader, ok, options%eps_t > 0.0_dp, line, position - 1, 'EPST must be positive')
+         options%has_eps_t = ok
+      case ('PENALTY_FACTOR')
+         options%factor_token = position
+         call reader%take_real(line, position, 'PENALTY_FACTOR', options%penalty_factor, ok)
+         call require(reader, ok, options%penalty_factor > 0.0_dp, line, position - 1, &
+                      'PENALTY_FACTOR must be positive')
+      case ('GAPTOL')
+         call reader%take_real(line, position, 'GAPTOL', options%gap_tolerance, ok)
+         call require(reader, ok, options%gap_tolerance >= 0.0_dp, line, position - 1, &
+                      'GAPTOL must not be negative')
+      case ('PASSES')
+         options%passes_token = position
+         call reader%take_integer(line, position, 'PASSES', options%passes, ok)
+         call require(reader, ok, options%passes == 1 .or. options%passes == 2, line, position - 1, &
+                      'PASSES must be 1 or 2')
+      case ('METHOD')
+         options%method_token = position
+         call reader%take_word(line, position, 'a normal contact method', options%method, ok)
+      case ('TMETHOD')
+         call read_tangential_method(reader, line, position, options, ok)
+      case ('PREDICT')
+         options%predict_token = position
+         call reader%take_yes_no(line, position, 'PREDICT', options%predict, ok)
+      case ('STICKTOL')
+         options%stick_token = position
+         call reader%take_real(line, position, 'STICKTOL', options%stick_tolerance, ok)
+         call require(reader, ok, options%stick_tolerance > 0.0_dp, line, position - 1, 'STICKTOL must be positive')
+      case ('LAW')
+         options%law_token = position
+         call reader%take_word(line, position, 'a friction law', options%law, ok)
+      case ('NORMALS')
+         call read_normals(reader, line, position, options, ok)
+      case ('DISCRETIZATION')
+         call read_discretization(reader, line, position, options, ok)
+      case ('FEATURE_ANGLE')
+         options%feature_token = position
+         call reader%take_real(line, position, 'FEATURE_ANGLE', options%feature_angle, ok)
+         call require(reader, ok, options%feature_angle > 0.0_dp .and. options%feature_angle < 180.0_dp, &
+                      line, position - 1, 'FEATURE_ANGLE must lie between 0 and 180 degrees (exclusive)')
+      case default
+         options%property_names = [character(len=32) :: options%property_names, word]
+         options%property_tokens = [options%property_tokens, position]
+         k = keyword_index(spec_names(normal_specs), word)
+         if (k > 0) then
+            call reader%take_property(line, position, normal_specs(k), options%normal, ok)
+            return
+         end if
+         k = keyword_index(spec_names(friction_specs), word)
+         if (k > 0) then
+            call reader%take_property(line, position, friction_specs(k), options%friction, ok)
+            return
+         end if
+         call reader%report(line, position - 1, 'unknown keyword (expected POINT, NORMAL, '// &
+                            joined(spec_names(normal_specs))//', EPST, PENALTY_FACTOR, '// &
+                            joined(spec_names(friction_specs))// &
+                            ', METHOD, TMETHOD, STICKTOL, PREDICT, LAW, GAPTOL, PASSES, NORMALS, FEATURE_ANGLE '// &
+                            'or DISCRETIZATION)')
+         ok = .false.
+      end select
+   end subroutine read_pair_option
 
    !> `DISCRETIZATION NodeToSegment|Mortar` (after DISCRETIZATION): node-to-segment contact
    !> (the default) or mortar contact (frix_mortar_contact).

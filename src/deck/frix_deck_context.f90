@@ -1,6 +1,8 @@
 !> The state of one deck reading shared by the section readers (frix_deck_*): the deck's lines
 !> and sections, the diagnostics, where each node and element came from, and the token helpers.
-!> Each token helper reports its own mistake; `ok` false skips the rest of a line.
+!> Each token helper reports its own mistake; `ok` false skips the rest of a line, except on
+!> keyword/value lines, whose readers go on at the next keyword (`resume_position`) so that
+!> every mistake of such a line is reported.
 module frix_deck_context
    use frix_kinds, only: dp
    use frix_strings, only: to_string, to_upper
@@ -14,7 +16,8 @@ module frix_deck_context
    private
 
    public :: deck_reader_t, property_t, deck_section_names, box_tolerance, read_keyword_pairs, keyword_pair_t
-   public :: require, read_node_dof, read_dof, mark_nodes, extend_origins, extend_properties, one_line, line_integer
+   public :: require, resume_position, read_node_dof, read_dof, mark_nodes, extend_origins, extend_properties, &
+             one_line, line_integer
    public :: s_problem, s_static, s_curves, s_materials, s_mesh_file, s_node_coords, s_elements, &
              s_mesh_block, s_node_sets, s_surfaces, s_dirichlet, s_neumann, s_body_force, s_steps, &
              s_results, s_contact, s_couplings, s_end
@@ -90,15 +93,13 @@ module frix_deck_context
    end type deck_reader_t
 
    !> One pair of a keyword/value section as its pair reader gets it: the deck line, the pair's
-   !> keyword (upper case) and the token after it. The pair reader reads the value(s) from
-   !> `position` on, sets `ok` false after a report, and `known` false for a keyword that does
-   !> not belong to its section (then it reads nothing).
+   !> keyword (upper case, one of the section's keywords) and the token after it. The pair
+   !> reader reads the value(s) from `position` on and sets `ok` false after a report.
    type :: keyword_pair_t
       type(deck_line_t) :: line
       character(len=:), allocatable :: keyword
       integer :: position = 1
       logical :: ok = .true.
-      logical :: known = .true.
    end type keyword_pair_t
 
    abstract interface
@@ -114,27 +115,32 @@ module frix_deck_context
 contains
 
    !> A section of keyword/value pairs in free order (PROBLEM TYP, STATIC, RESULTS), each pair
-   !> read by `read_pair`.
-   subroutine read_keyword_pairs(reader, model, section, read_pair)
+   !> read by `read_pair`; `keywords` (upper case) are the section's. After a mistake the line
+   !> is read on from its next keyword, so that every mistake of the line is reported.
+   subroutine read_keyword_pairs(reader, model, section, keywords, read_pair)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
       integer, intent(in) :: section
+      character(len=*), intent(in) :: keywords(:)
       procedure(pair_reader_interface) :: read_pair
       type(keyword_pair_t) :: pair
-      integer :: i
+      integer :: i, start
       i = 0
       do while (reader%next_line(section, i, pair%position, pair%ok))
          pair%line = reader%lines(i)
-         do while (pair%ok .and. pair%position <= pair%line%n_tokens())
-            pair%known = .true.
-            pair%keyword = pair%line%keyword(pair%position)
-            pair%position = pair%position + 1
-            call read_pair(reader, model, pair)
-            if (.not. pair%known) then
-               call reader%report(pair%line, pair%position - 1, 'unknown keyword in section '// &
+         do while (pair%position <= pair%line%n_tokens())
+            start = pair%position
+            pair%keyword = pair%line%keyword(start)
+            pair%position = start + 1
+            pair%ok = .true.
+            if (any(keywords == pair%keyword)) then
+               call read_pair(reader, model, pair)
+            else
+               call reader%report(pair%line, start, 'unknown keyword in section '// &
                                   trim(deck_section_names(section)))
                pair%ok = .false.
             end if
+            if (.not. pair%ok) pair%position = resume_position(pair%line, max(pair%position, start + 1), keywords)
          end do
       end do
    end subroutine read_keyword_pairs
@@ -503,6 +509,21 @@ contains
       call require(reader, ok, component >= 1 .and. component <= 3, line, position - 1, &
                    'DOF index out of range 1..3')
    end subroutine read_dof
+
+   !> Where a keyword/value line is read on after a mistake in what one keyword began: the first
+   !> token from `position` on that is one of `keywords` (upper case), past the line's end if
+   !> none is. The tokens between (the rest of a bad value, an unknown keyword's value) are
+   !> skipped unread, so that no mistake is reported twice.
+   pure integer function resume_position(line, position, keywords) result(resume)
+      type(deck_line_t), intent(in) :: line
+      integer, intent(in) :: position
+      character(len=*), intent(in) :: keywords(:)
+      resume = position
+      do while (resume <= line%n_tokens())
+         if (any(keywords == line%keyword(resume))) return
+         resume = resume + 1
+      end do
+   end function resume_position
 
    !> Report `message` at token `position` unless `condition` holds (only if still `ok`).
    subroutine require(reader, ok, condition, line, position, message)

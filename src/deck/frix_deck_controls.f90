@@ -7,11 +7,19 @@ module frix_deck_controls
    use frix_model, only: model_t, load_curve_t, step_t, curve_factor
    use frix_deck_tokens, only: deck_line_t, parse_real
    use frix_deck_context, only: deck_reader_t, read_keyword_pairs, keyword_pair_t, require, read_node_dof, &
-                                s_problem, s_static, s_curves, s_steps
+                                resume_position, s_problem, s_static, s_curves, s_steps
    implicit none
    private
 
    public :: read_controls, read_curves, read_steps
+
+   !> The keywords of STATIC (read by read_static_pair).
+   character(len=15), parameter :: static_keywords(9) = [character(len=15) :: 'KINTYP', 'MAXITER', 'MAXCUT', &
+      'TOLRESID', 'TOLDISP', 'SOLVER', 'MU_CONTINUATION', 'EXTRAPOLATION', 'NEWTONRAPHSO']
+
+   !> The keywords of a STEP line after its number.
+   character(len=18), parameter :: step_keywords(4) = [character(len=18) :: 'NUMSTEP', 'CONTROL', 'MAXITER', &
+      'RESET_DISPLACEMENT']
 
 contains
 
@@ -19,8 +27,8 @@ contains
    subroutine read_controls(reader, model)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
-      call read_keyword_pairs(reader, model, s_problem, read_problem_pair)
-      call read_keyword_pairs(reader, model, s_static, read_static_pair)
+      call read_keyword_pairs(reader, model, s_problem, [character(len=10) :: 'PROBLEMTYP'], read_problem_pair)
+      call read_keyword_pairs(reader, model, s_static, static_keywords, read_static_pair)
    end subroutine read_controls
 
    !> `PROBLEMTYP Structure`.
@@ -29,8 +37,6 @@ contains
       type(model_t), intent(inout) :: model
       type(keyword_pair_t), intent(inout) :: pair
       character(len=:), allocatable :: word
-      pair%known = pair%keyword == 'PROBLEMTYP'
-      if (.not. pair%known) return
       call reader%take_word(pair%line, pair%position, 'PROBLEMTYP value', word, pair%ok)
       if (pair%ok .and. to_upper(word) /= 'STRUCTURE') then
          call reader%report(pair%line, pair%position - 1, 'unknown problem type (expected Structure)')
@@ -91,8 +97,6 @@ contains
                                   'unknown NEWTONRAPHSO (expected Load_Control or Displacement_Control)')
                ok = .false.
             end if
-         case default
-            pair%known = .false.
          end select
       end associate
    end subroutine read_static_pair
@@ -198,9 +202,8 @@ contains
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
       type(step_t) :: step
-      character(len=:), allocatable :: word
-      integer :: i, position, number, expected, last_step_line
-      logical :: ok
+      integer :: i, position, number, expected, last_step_line, start
+      logical :: ok, line_ok
       allocate (model%steps(0))
       reader%step_lines = 0
       last_step_line = 0
@@ -219,38 +222,18 @@ contains
                          'steps must be numbered 1, 2, ... in order: expected step '//to_string(expected))
             expected = expected + 1
             step = step_t(n_increments=0, control='LOAD')   ! n_increments 0: NUMSTEP missing
-            do while (ok .and. position <= line%n_tokens())
-               select case (line%keyword(position))
-               case ('NUMSTEP')
-                  position = position + 1
-                  call reader%take_integer(line, position, 'NUMSTEP', step%n_increments, ok)
-                  call require(reader, ok, step%n_increments >= 1, line, position - 1, 'NUMSTEP must be positive')
-               case ('CONTROL')
-                  position = position + 1
-                  call reader%take_word(line, position, 'CONTROL value', word, ok)
-                  if (.not. ok) exit
-                  select case (to_upper(word))
-                  case ('LOAD', 'DISPLACEMENT')
-                     step%control = to_upper(word)
-                  case ('PATH')
-                     step%control = 'PATH'
-                     call read_path_control(reader, model, line, position, number, step, ok)
-                  case default
-                     call reader%report(line, position - 1, 'unknown CONTROL (expected Load, Displacement or Path)')
-                     ok = .false.
-                  end select
-               case ('MAXITER')
-                  position = position + 1
-                  call reader%take_integer(line, position, 'MAXITER', step%max_iterations, ok)
-                  call require(reader, ok, step%max_iterations >= 1, line, position - 1, 'MAXITER must be at least 1')
-               case ('RESET_DISPLACEMENT')
-                  position = position + 1
-                  step%reset_displacement = .true.
-               case default
-                  call reader%report(line, position, 'unknown keyword in STEPS')
-                  ok = .false.
-               end select
+            line_ok = ok
+            if (.not. ok) position = resume_position(line, position, step_keywords)
+            do while (position <= line%n_tokens())
+               start = position
+               ok = .true.
+               call read_step_keyword(reader, model, line, position, number, step, ok)
+               if (.not. ok) then
+                  line_ok = .false.
+                  position = resume_position(line, max(position, start + 1), step_keywords)
+               end if
             end do
+            ok = line_ok
             if (ok .and. step%n_increments == 0) then
                call reader%report(line, line%n_tokens() + 1, 'missing NUMSTEP')
                ok = .false.
@@ -266,6 +249,49 @@ contains
          end associate
       end do
    end subroutine read_steps
+
+   !> One keyword of a STEP line at `position` (NUMSTEP, CONTROL, MAXITER, RESET_DISPLACEMENT)
+   !> with its value(s), into `step` (number `number`).
+   subroutine read_step_keyword(reader, model, line, position, number, step, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      integer, intent(in) :: number
+      type(step_t), intent(inout) :: step
+      logical, intent(inout) :: ok
+      character(len=:), allocatable :: word
+      select case (line%keyword(position))
+      case ('NUMSTEP')
+         position = position + 1
+         call reader%take_integer(line, position, 'NUMSTEP', step%n_increments, ok)
+         call require(reader, ok, step%n_increments >= 1, line, position - 1, 'NUMSTEP must be positive')
+      case ('CONTROL')
+         position = position + 1
+         call reader%take_word(line, position, 'CONTROL value', word, ok)
+         if (.not. ok) return
+         select case (to_upper(word))
+         case ('LOAD', 'DISPLACEMENT')
+            step%control = to_upper(word)
+         case ('PATH')
+            step%control = 'PATH'
+            call read_path_control(reader, model, line, position, number, step, ok)
+         case default
+            call reader%report(line, position - 1, 'unknown CONTROL (expected Load, Displacement or Path)')
+            ok = .false.
+         end select
+      case ('MAXITER')
+         position = position + 1
+         call reader%take_integer(line, position, 'MAXITER', step%max_iterations, ok)
+         call require(reader, ok, step%max_iterations >= 1, line, position - 1, 'MAXITER must be at least 1')
+      case ('RESET_DISPLACEMENT')
+         position = position + 1
+         step%reset_displacement = .true.
+      case default
+         call reader%report(line, position, 'unknown keyword in STEPS')
+         ok = .false.
+      end select
+   end subroutine read_step_keyword
 
    !> `CONTROL Path NODE <id> DOF <1-3> TARGET <value>` (after the word Path) of step `number`:
    !> the driving displacement, which must be free (no Dirichlet condition on it), and loads

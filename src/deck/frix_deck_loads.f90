@@ -4,7 +4,7 @@ module frix_deck_loads
    use frix_kinds, only: dp
    use frix_mesh, only: hex8_face_nodes
    use frix_model, only: model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t
-   use frix_deck_context, only: deck_reader_t, require, mark_nodes, s_dirichlet, s_neumann, s_body_force
+   use frix_deck_context, only: deck_reader_t, require, mark_nodes, resume_position, s_dirichlet, s_neumann, s_body_force
    use frix_strings, only: to_string
    implicit none
    private
@@ -16,6 +16,9 @@ module frix_deck_loads
       integer :: line = 0
       integer :: value_token = 0
    end type dirichlet_origin_t
+
+   !> The keywords of a pressure line after its value.
+   character(len=8), parameter :: pressure_keywords(2) = [character(len=8) :: 'CURVE', 'FOLLOWER']
 
 contains
 
@@ -134,7 +137,8 @@ contains
       character(len=:), allocatable :: name
       integer :: i, k, e, position, curve
       real(dp) :: values(3)
-      logical :: ok
+      integer :: start
+      logical :: ok, line_ok
       allocate (model%nodal_forces(0), model%pressures(0))
       i = 0
       do while (reader%next_line(s_neumann, i, position, ok))
@@ -153,7 +157,11 @@ contains
                call reader%take_real(line, position, 'a pressure', pressure%value, ok)
                pressure%curve = 0
                pressure%follower = .false.
-               do while (ok .and. position <= line%n_tokens())
+               line_ok = ok
+               if (.not. ok) position = resume_position(line, position, pressure_keywords)
+               do while (position <= line%n_tokens())
+                  start = position
+                  ok = .true.
                   select case (line%keyword(position))
                   case ('CURVE')
                      position = position + 1
@@ -165,7 +173,12 @@ contains
                      call reader%report(line, position, 'unknown keyword (expected CURVE or FOLLOWER)')
                      ok = .false.
                   end select
+                  if (.not. ok) then
+                     line_ok = .false.
+                     position = resume_position(line, max(position, start + 1), pressure_keywords)
+                  end if
                end do
+               ok = line_ok
                if (.not. ok) cycle
                model%pressures = [model%pressures, pressure]
                associate (surface => model%mesh%surfaces(pressure%surface))

@@ -15,12 +15,16 @@ module frix_deck_mesh
    use frix_model, only: model_t
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, require, extend_origins, extend_properties, box_tolerance, &
-                                s_mesh_file, s_node_coords, s_mesh_block, s_node_sets, s_surfaces
+                                resume_position, s_mesh_file, s_node_coords, s_mesh_block, s_node_sets, s_surfaces
    implicit none
    private
 
    public :: read_mesh_file, read_node_coords, read_mesh_blocks, finish_mesh_numbering
    public :: read_node_sets, read_surfaces
+
+   !> The keywords of a MESH BLOCK line after its name.
+   character(len=14), parameter :: block_keywords(5) = [character(len=14) :: 'ORIGIN', 'SIZE', 'DIVISIONS', &
+      'NODE_OFFSET', 'ELEMENT_OFFSET']
 
 contains
 
@@ -139,7 +143,8 @@ contains
       character(len=:), allocatable :: name
       real(dp) :: origin(3), lengths(3)
       integer :: divisions(3), node_offset, element_offset, i, position, k
-      logical :: ok, has(3)
+      integer :: start
+      logical :: ok, has(3), line_ok
       i = 0
       do while (reader%next_line(s_mesh_block, i, position, ok))
          associate (line => reader%lines(i))
@@ -150,7 +155,11 @@ contains
             if (model%mesh%n_nodes > 0) node_offset = maxval(model%mesh%node_ids)
             if (model%mesh%n_elements > 0) element_offset = maxval(model%mesh%element_ids)
             has = .false.
-            do while (ok .and. position <= line%n_tokens())
+            line_ok = ok
+            if (.not. ok) position = resume_position(line, position, block_keywords)
+            do while (position <= line%n_tokens())
+               start = position
+               ok = .true.
                select case (line%keyword(position))
                case ('ORIGIN')
                   position = position + 1
@@ -183,7 +192,12 @@ contains
                   call reader%report(line, position, 'unknown keyword in MESH BLOCK')
                   ok = .false.
                end select
+               if (.not. ok) then
+                  line_ok = .false.
+                  position = resume_position(line, max(position, start + 1), block_keywords)
+               end if
             end do
+            ok = line_ok
             if (ok .and. .not. all(has)) then
                call reader%report(line, line%n_tokens() + 1, 'a BLOCK needs ORIGIN, SIZE and DIVISIONS')
                ok = .false.

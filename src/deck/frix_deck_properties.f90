@@ -16,7 +16,7 @@ module frix_deck_properties
    use frix_model, only: model_t
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, property_t, require, extend_origins, extend_properties, &
-                                one_line, line_integer, s_materials, s_elements
+                                one_line, line_integer, resume_position, s_materials, s_elements
    implicit none
    private
 
@@ -247,6 +247,8 @@ contains
    end subroutine read_property
 
    !> The `MAT <m>`, `KINTYP <kin>` and shape option pairs of an element line into `candidate`.
+   !> After a mistake the line is read on from its next keyword, so that every mistake of the
+   !> line is reported.
    subroutine read_property_pairs(reader, model, line, position, shape, candidate, ok)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(in) :: model
@@ -255,39 +257,64 @@ contains
       type(element_shape_t), intent(in) :: shape
       type(property_t), intent(inout) :: candidate
       logical, intent(inout) :: ok
-      integer :: material_id, option
-      logical :: has_material
+      character(len=32), allocatable :: keywords(:)
+      integer :: start
+      logical :: has_material, line_ok
+      keywords = [character(len=32) :: 'MAT', 'KINTYP', spec_names(shape%options)]
       has_material = .false.
-      do while (ok .and. position <= line%n_tokens())
-         position = position + 1
-         select case (line%keyword(position - 1))
-         case ('MAT')
-            call reader%take_integer(line, position, 'a material id', material_id, ok)
-            if (.not. ok) exit
-            has_material = .true.
-            candidate%material = findloc(model%material_ids, material_id, dim=1)
-            if (candidate%material == 0) then
-               ok = .false.
-               if (.not. any(reader%failed_material_ids == material_id)) &
-                  call reader%report(line, position - 1, 'undefined material '//to_string(material_id))
-            end if
-         case ('KINTYP')
-            call reader%take_kinematics(line, position, candidate%kinematics, ok)
-         case default
-            option = keyword_index(spec_names(shape%options), line%keyword(position - 1))
-            if (option == 0) then
-               call reader%report(line, position - 1, 'unknown keyword on an element line')
-               ok = .false.
-            else
-               call reader%take_property(line, position, shape%options(option), candidate%options, ok)
-            end if
-         end select
+      line_ok = ok
+      do while (position <= line%n_tokens())
+         start = position
+         ok = .true.
+         call read_property_pair(reader, model, line, position, shape, candidate, has_material, ok)
+         if (.not. ok) then
+            line_ok = .false.
+            position = resume_position(line, max(position, start + 1), keywords)
+         end if
       end do
+      ok = line_ok
       if (ok .and. .not. has_material) then
          call reader%report(line, line%n_tokens() + 1, 'missing MAT <id>')
          ok = .false.
       end if
    end subroutine read_property_pairs
+
+   !> One keyword of an element line at `position` with its value into `candidate`
+   !> (`has_material` set by MAT).
+   subroutine read_property_pair(reader, model, line, position, shape, candidate, has_material, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      type(element_shape_t), intent(in) :: shape
+      type(property_t), intent(inout) :: candidate
+      logical, intent(inout) :: has_material
+      logical, intent(inout) :: ok
+      integer :: material_id, option
+      position = position + 1
+      select case (line%keyword(position - 1))
+      case ('MAT')
+         call reader%take_integer(line, position, 'a material id', material_id, ok)
+         if (.not. ok) return
+         has_material = .true.
+         candidate%material = findloc(model%material_ids, material_id, dim=1)
+         if (candidate%material == 0) then
+            ok = .false.
+            if (.not. any(reader%failed_material_ids == material_id)) &
+               call reader%report(line, position - 1, 'undefined material '//to_string(material_id))
+         end if
+      case ('KINTYP')
+         call reader%take_kinematics(line, position, candidate%kinematics, ok)
+      case default
+         option = keyword_index(spec_names(shape%options), line%keyword(position - 1))
+         if (option == 0) then
+            call reader%report(line, position - 1, 'unknown keyword on an element line')
+            ok = .false.
+         else
+            call reader%take_property(line, position, shape%options(option), candidate%options, ok)
+         end if
+      end select
+   end subroutine read_property_pair
 
    !> `candidate%formulation`: the name of the element its shape, options and kinematics make,
    !> empty when they make none (the options are then compared instead).

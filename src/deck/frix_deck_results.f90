@@ -16,7 +16,8 @@ contains
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
       if (.not. allocated(model%results%history)) allocate (model%results%history(0))
-      call read_keyword_pairs(reader, model, s_results, read_results_pair)
+      call read_keyword_pairs(reader, model, s_results, [character(len=7) :: 'VTK', 'LISTING', 'POS3D', 'HDF5', 'EVERY', &
+                                                                 'HISTORY'], read_results_pair)
    end subroutine read_results
 
    !> `VTK|LISTING|POS3D|HDF5 Yes|No`, `EVERY <n>`, `HISTORY ...`.
@@ -43,8 +44,6 @@ contains
          case ('HISTORY')
             call read_history(reader, model, line, position, request, ok)
             if (ok) model%results%history = [model%results%history, request]
-         case default
-            pair%known = .false.
          end select
       end associate
    end subroutine read_results_pair

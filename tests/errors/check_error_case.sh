@@ -4,7 +4,9 @@
 #   - the exit status is non-zero, but neither 2 (usage error) nor >= 128 (signal / crash),
 #   - stderr contains every fragment given on the deck's `// EXPECT: <fragment>` lines
 #     (fixed strings; at least one EXPECT line is required),
-#   - the output holds no "Fortran runtime error", "Backtrace" or "SIGSEGV".
+#   - the output holds no "Fortran runtime error", "Backtrace" or "SIGSEGV",
+#   - with a `// EXPECT_ERRORS: <n>` line, the deck is rejected with exactly n errors (the
+#     summary line "<deck>: n error(s) in the deck"): no mistake missed, none reported twice.
 # Exit 0 when all hold, 1 otherwise (with a message saying which check failed).
 set -u
 if [ $# -ne 2 ]; then
@@ -50,6 +52,11 @@ while IFS= read -r fragment; do
   fi
 done < <(sed -n 's/^[[:space:]]*\/\/[[:space:]]*EXPECT:[[:space:]]*//p' "$deck" | sed 's/[[:space:]]*$//')
 if [ "$n_expect" -eq 0 ]; then fail "the deck has no // EXPECT: line"; fi
+
+n_errors=$(sed -n 's/^[[:space:]]*\/\/[[:space:]]*EXPECT_ERRORS:[[:space:]]*\([0-9]*\).*/\1/p' "$deck")
+if [ -n "$n_errors" ] && ! grep -q ": $n_errors error(s) in the deck" "$workdir/stderr"; then
+  fail "expected exactly $n_errors error(s) in the deck"
+fi
 
 if [ "$failed" -ne 0 ]; then
   echo "---- exit status: $status; stderr of $frix --check $deck:" >&2
