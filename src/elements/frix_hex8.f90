@@ -3,8 +3,9 @@
 !> either geometrically linear or total Lagrangian kinematics. Theory, mode tables and sources:
 !> docs/elements.md.
 !>
-!> Node order is VTK's (see frix_mesh): node a sits at parent corner (xi_a, eta_a, zeta_a) =
-!> `corner(:, a)`. Integration point g sits at corner(:, g) / sqrt(3) with weight 1.
+!> Node order, integration points and shape functions are the reference cell's (frix_hex8_cell):
+!> node a at parent corner `hex8_corner(:, a)`, integration point g at hex8_corner(:, g) /
+!> sqrt(3) with weight 1; the tables below evaluate its shape functions at those points.
 !>
 !> Linear kinematics: eps = B u (+ enhanced eps~), sigma = material(eps),
 !>   fint = sum_g B^T sigma dV_g, K = sum_g B^T C B dV_g (Zienkiewicz & Taylor, vol. 1, ch. 6).
@@ -29,20 +30,12 @@ module frix_hex8
    use frix_eas_modes, only: max_eas_modes, is_valid_eas_count, eas_modes, strain_push_matrix
    use frix_vector_algebra, only: determinant, invert3
    use frix_dense_algebra, only: solve_in_place
+   use frix_hex8_cell, only: hex8_corner, hex8_gauss_points
    implicit none
    private
 
    public :: hex8_t, new_hex8
-   public :: hex8_corner, hex8_gauss_points, max_local_iterations, local_tolerance
-
-   !> Parent coordinates of the nodes, VTK / Abaqus C3D8 order, (3, 8).
-   integer, parameter :: hex8_corner(3, 8) = reshape([ &
-                                                     -1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, &
-                                                     -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1], [3, 8])
-   !> Gauss abscissa 1/sqrt(3) of the 2-point rule (weight 1).
-   real(dp), parameter :: gauss_abscissa = 0.57735026918962576450914878050196_dp
-   !> Parent coordinates of the 8 integration points (point g beside node g), (3, 8).
-   real(dp), parameter :: hex8_gauss_points(3, 8) = hex8_corner*gauss_abscissa
+   public :: max_local_iterations, local_tolerance
 
    integer :: d_, a_, g_  ! implied-do indices (direction, node, point) of the two constant tables below
    !> Shape function values N_a at point g: prod_i (1 + xi_ia xi_ig)/8, (8 nodes, 8 points).

@@ -14,18 +14,19 @@
 module frix_surface_load
    use frix_kinds, only: dp
    use frix_vector_algebra, only: cross_product, skew
+   use frix_quad4_cell, only: quad4_corner, quad4_gauss_points
    implicit none
    private
 
    public :: pressure_load, face_area_weights
    public :: face_node_xi, face_node_eta, face_shape_functions
 
-   real(dp), parameter :: face_node_xi(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]   !! xi of the face nodes
-   real(dp), parameter :: face_node_eta(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]  !! eta of the face nodes
-   !> 2 x 2 Gauss-Legendre points +-1/sqrt(3), weights 1.
-   real(dp), parameter :: gauss_abscissa = 0.57735026918962576451_dp
-   real(dp), parameter :: point_xi(4) = gauss_abscissa*[-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]
-   real(dp), parameter :: point_eta(4) = gauss_abscissa*[-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]
+   !> Natural coordinates of the face nodes and of the 2 x 2 Gauss points (weights 1): the
+   !> QUAD4 reference cell's (frix_quad4_cell).
+   real(dp), parameter :: face_node_xi(4) = real(quad4_corner(1, :), dp)
+   real(dp), parameter :: face_node_eta(4) = real(quad4_corner(2, :), dp)
+   real(dp), parameter :: point_xi(4) = quad4_gauss_points(1, :)
+   real(dp), parameter :: point_eta(4) = quad4_gauss_points(2, :)
 
 contains
 

@@ -1,40 +1,25 @@
 !> Recovery of integration-point fields (stress, strain) to cells and nodes for output, and the
 !> von Mises equivalent stress.
 !>
-!> Integration-point arrays are `gp(n_components, n_points, n_elements)`; for the 2x2x2 Gauss
-!> rule of HEX8 (n_points = 8) the points are assumed ordered like the element's nodes: point g
-!> sits at natural coordinates s_g / sqrt(3), where s_g (entries +-1) are the natural coordinates
-!> of local node g (`hex8_node_signs`, VTK/frix_mesh node order). A caller whose elements use
-!> another order passes `point_signs` explicitly.
+!> Integration-point arrays are `gp(n_components, n_points, n_elements)`, the points in the order
+!> of the cell's Gauss rule (frix_hex8_cell: point g beside node g).
 !>
 !> Nodal values: each element gives a value at each of its nodes, and a node receives the
 !> arithmetic mean over the elements that contain it (unweighted; discontinuities between
 !> blocks of different materials are smeared). The element's nodal values are
 !>   - `nodal_average`: the element's mean over its points, copied to all its nodes;
-!>   - `nodal_extrapolated` (8 points only): the trilinear field through the 8 Gauss values,
-!>     evaluated at the nodes, f_a = sum_g N_g(sqrt(3) s_a) f_g with N_g the trilinear shape
-!>     function of corner g (Hinton & Campbell 1974, local least-squares smoothing, which for
-!>     2x2x2 Gauss equals this inverse interpolation). Exact for fields trilinear in xi.
+!>   - `nodal_extrapolated` (HEX8 with 8 points): the field the cell recovers from its Gauss
+!>     values, evaluated at the nodes, f_a = sum_g E(a, g) f_g with the cell's extrapolation
+!>     matrix E (frix_hex8_cell: the trilinear field through the 8 Gauss values).
 module frix_field_recovery
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_hex8_cell, only: hex8_cell_t, new_hex8_cell
    implicit none
    private
 
    public :: cell_average, nodal_average, nodal_extrapolated, von_mises, von_mises_field
-   public :: hex8_node_signs, hex8_extrapolation_matrix
-
-   !> Natural coordinates (xi, eta, zeta) of the 8 HEX8 corners in frix_mesh (VTK) order, (3, 8).
-   integer, parameter :: hex8_node_signs(3, 8) = reshape([ &
-                                                         -1, -1, -1, &
-                                                         1, -1, -1, &
-                                                         1, 1, -1, &
-                                                         -1, 1, -1, &
-                                                         -1, -1, 1, &
-                                                         1, -1, 1, &
-                                                         1, 1, 1, &
-                                                         -1, 1, 1], [3, 8])
 
 contains
 
@@ -70,13 +55,13 @@ contains
    !> Nodal values from the 2x2x2 Gauss values by trilinear extrapolation within each element,
    !> then the mean over the elements at each node. Fails unless there are 8 points and 8
    !> nodes per element.
-   pure subroutine nodal_extrapolated(connectivity, gp, nodal, error, point_signs)
+   pure subroutine nodal_extrapolated(connectivity, gp, nodal, error)
       integer, intent(in) :: connectivity(:, :)  !! (8, n_elements) internal node numbers
       real(dp), intent(in) :: gp(:, :, :)        !! (n_components, 8, n_elements)
       real(dp), intent(out) :: nodal(:, :)       !! (n_components, n_nodes)
       type(error_t), allocatable, intent(out) :: error
-      integer, intent(in), optional :: point_signs(3, 8)  !! natural-coordinate signs of each point (default `hex8_node_signs`)
-      real(dp) :: extrapolation(8, 8)
+      type(hex8_cell_t) :: cell
+      real(dp), allocatable :: extrapolation(:, :)
       real(dp), allocatable :: element_values(:, :, :)
       integer :: e
       if (size(gp, 2) /= 8 .or. size(connectivity, 1) /= 8) then
@@ -84,11 +69,8 @@ contains
                           to_string(size(gp, 2))//' points and '//to_string(size(connectivity, 1))//' nodes')
          return
       end if
-      if (present(point_signs)) then
-         extrapolation = hex8_extrapolation_matrix(point_signs)
-      else
-         extrapolation = hex8_extrapolation_matrix(hex8_node_signs)
-      end if
+      cell = new_hex8_cell()
+      extrapolation = cell%extrapolation()
       allocate (element_values(size(gp, 1), 8, size(gp, 3)))
       do e = 1, size(gp, 3)
          ! element_values(:, a, e) = sum_g gp(:, g, e) * extrapolation(a, g)
@@ -96,19 +78,6 @@ contains
       end do
       call scatter_mean(connectivity, element_values, nodal)
    end subroutine nodal_extrapolated
-
-   !> E(a, g) = N_g(sqrt(3) s_a) = 1/8 prod_i (1 + 3^(1/2) p_gi s_ai), with s_a the corner
-   !> signs of node a and p_g the signs of Gauss point g (point at p_g / sqrt(3)).
-   pure function hex8_extrapolation_matrix(point_signs) result(extrapolation)
-      integer, intent(in) :: point_signs(3, 8)
-      real(dp) :: extrapolation(8, 8)
-      integer :: a, g
-      do g = 1, 8
-         do a = 1, 8
-            extrapolation(a, g) = product(1.0_dp + sqrt(3.0_dp)*real(point_signs(:, g)*hex8_node_signs(:, a), dp))/8.0_dp
-         end do
-      end do
-   end function hex8_extrapolation_matrix
 
    !> nodal(:, n) = mean of element_values(:, a, e) over all (a, e) with connectivity(a, e) = n.
    pure subroutine scatter_mean(connectivity, element_values, nodal)

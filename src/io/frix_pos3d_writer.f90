@@ -39,6 +39,7 @@ module frix_pos3d_writer
    use frix_field_recovery, only: nodal_extrapolated, von_mises_field
    use frix_finite_check, only: first_non_finite
    use frix_text_output, only: real_edit, text_file_t
+   use frix_hex8_cell, only: hex8_pos3d_name
    implicit none
    private
 
@@ -280,7 +281,7 @@ contains
       end do
       call file%put('%ELEMENT')
       call file%put(to_string(n_elements))
-      call file%put('%ELEMENT.BRICK8')
+      call file%put('%ELEMENT.'//hex8_pos3d_name)
       call file%put(to_string(n_elements))
       do element = 1, n_elements
          if (file%failed()) exit

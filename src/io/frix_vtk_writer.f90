@@ -7,7 +7,7 @@
 !> `.vtu` files relative to its own folder. Format reference: "VTK File Formats", VTK User's
 !> Guide (Kitware), section "XML File Formats"; ParaView reads `.pvd` as a time series.
 !>
-!> Each `.vtu` holds the reference coordinates as Points, HEX8 cells (VTK_HEXAHEDRON = 12,
+!> Each `.vtu` holds the reference coordinates as Points, HEX8 cells (the cell's VTK code, 12,
 !> frix_mesh node order = VTK order, 0-based connectivity) and
 !>   PointData: displacement (3), reaction (3), stress (6), strain (6), von_mises (1),
 !>              then the extra point fields added since the last increment;
@@ -26,14 +26,14 @@ module frix_vtk_writer
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string, zero_padded
    use frix_mesh, only: mesh_t
+   use frix_hex8_cell, only: hex8_vtk_type
    use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises_field
    use frix_text_output, only: real_edit, text_file_t
    implicit none
    private
 
-   public :: vtk_series_t, vtk_hexahedron
+   public :: vtk_series_t
 
-   integer, parameter :: vtk_hexahedron = 12   !! VTK cell type of the 8-node hexahedron
 
    !> A named field: values(n_components, n_nodes or n_elements).
    type :: named_field_t
@@ -209,7 +209,7 @@ contains
       call file%put('<Cells>')
       call put_integers(file, 'connectivity', 'Int64', reshape(mesh%connectivity - 1, [8*mesh%n_elements]), per_line=8)
       call put_integers(file, 'offsets', 'Int64', [(8*i, i=1, mesh%n_elements)])
-      call put_integers(file, 'types', 'UInt8', [(vtk_hexahedron, i=1, mesh%n_elements)])
+      call put_integers(file, 'types', 'UInt8', [(hex8_vtk_type, i=1, mesh%n_elements)])
       call file%put('</Cells>')
       call file%put('</Piece>')
       call file%put('</UnstructuredGrid>')

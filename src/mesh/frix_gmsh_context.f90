@@ -10,6 +10,8 @@ module frix_gmsh_context
    use frix_strings, only: to_string
    use frix_text_scanner, only: text_scanner_t
    use frix_id_map, only: id_map_t
+   use frix_hex8_cell, only: hex8_gmsh_type
+   use frix_quad4_cell, only: quad4_gmsh_type
    implicit none
    private
 
@@ -20,7 +22,8 @@ module frix_gmsh_context
    public :: read_blocks_header, read_block_start, read_block_count, check_blocks_total
    public :: read_positive_id, read_physical_tag, read_dimension, shorten
 
-   integer, parameter :: gmsh_quadrangle = 3, gmsh_hexahedron = 5
+   !> The gmsh element types frix reads: the reference cells' codes (frix_hex8_cell, frix_quad4_cell).
+   integer, parameter :: gmsh_quadrangle = quad4_gmsh_type, gmsh_hexahedron = hex8_gmsh_type
 
    !> A growable list of default integers.
    type :: integer_list_t

@@ -1,27 +1,15 @@
 !> The mesh: nodes, 8-node hexahedra and named sets. Internal numbering is 1..n in the order
 !> read; `node_ids` and `element_ids` keep the user's (deck or gmsh) ids for messages and output.
 !>
-!> HEX8 local node order is VTK's (= Abaqus C3D8, gmsh hexahedron): nodes 1-4 on the face
-!> zeta = -1 counter-clockwise seen from zeta = +1, node a+4 above node a.
-!> Local faces, each listed counter-clockwise seen from outside (right-hand rule gives the
-!> outward normal), see `hex8_face_nodes`:
-!>   1: zeta=-1 (1 4 3 2)   2: zeta=+1 (5 6 7 8)   3: eta=-1 (1 2 6 5)
-!>   4: xi=+1  (2 3 7 6)    5: eta=+1 (3 4 8 7)    6: xi=-1  (1 5 8 4)
+!> HEX8 local node order and faces: the reference cell's (frix_hex8_cell, VTK's order;
+!> `hex8_face_nodes` is its face table, passed on for the mesh's users).
 module frix_mesh
    use frix_kinds, only: dp
+   use frix_hex8_cell, only: hex8_face_nodes
    implicit none
    private
 
    public :: mesh_t, node_set_t, element_set_t, surface_t, hex8_face_nodes
-
-   !> Local node numbers of each HEX8 face, outward orientation, (4, 6).
-   integer, parameter :: hex8_face_nodes(4, 6) = reshape([ &
-                                                         1, 4, 3, 2, &
-                                                         5, 6, 7, 8, &
-                                                         1, 2, 6, 5, &
-                                                         2, 3, 7, 6, &
-                                                         3, 4, 8, 7, &
-                                                         1, 5, 8, 4], [4, 6])
 
    type :: node_set_t
       character(len=:), allocatable :: name

@@ -6,6 +6,7 @@ module frix_mesh_checks
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t, node_set_t, element_set_t, surface_t
    use frix_id_map, only: id_map_t
+   use frix_hex8_cell, only: hex8_cell_t, new_hex8_cell
    implicit none
    private
 
@@ -13,16 +14,11 @@ module frix_mesh_checks
    public :: build_node_lookup, build_element_lookup, mesh_bounding_box
    public :: node_to_elements, merge_meshes
 
-   !> Natural coordinates (xi, eta, zeta) of the HEX8 nodes, VTK order (see frix_mesh).
-   real(dp), parameter :: hex8_natural(3, 8) = reshape([ &
-                                                       -1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, &
-                                                       -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1], [3, 8])
-
 contains
 
    !> Internal numbers of the elements whose Jacobian determinant det(dx/dxi) is <= 0 at one
-   !> of the 8 Gauss points of the 2 x 2 x 2 rule (xi = +-1/sqrt 3) or at the centre: where
-   !> the element is integrated (inverted or degenerate elements). A strongly distorted
+   !> of the points of the cell's Gauss rule (HEX8: 2 x 2 x 2, xi = +-1/sqrt 3) or at the
+   !> centre: where the element is integrated (inverted or degenerate elements). A strongly distorted
    !> element may have det < 0 at a corner and still be usable: the 7-element patch of
    !> MacNeal & Harder has one such element (tests/verification V1). The trilinear map is
    !> x(xi) = sum_a N_a(xi) x_a, N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta)/8. A mirrored
@@ -37,16 +33,18 @@ contains
       integer, allocatable, intent(out) :: bad_elements(:)
       integer, allocatable, intent(out) :: overflowing(:)
       logical, allocatable :: is_bad(:), is_infinite(:)
+      type(hex8_cell_t) :: cell
       real(dp) :: points(3, 9), x(3, 8), determinant
       integer :: element, point
       call ieee_set_halting_mode(ieee_usual, .false.)
-      points(:, 1:8) = hex8_natural/sqrt(3.0_dp)
+      cell = new_hex8_cell()
+      points(:, 1:8) = cell%points
       points(:, 9) = 0
       allocate (is_bad(mesh%n_elements), is_infinite(mesh%n_elements), source=.false.)
       do element = 1, mesh%n_elements
          x = mesh%coords(:, mesh%connectivity(:, element))
          do point = 1, 9
-            determinant = jacobian_determinant(x, points(:, point))
+            determinant = jacobian_determinant(cell, x, points(:, point))
             if (.not. ieee_is_finite(determinant)) then
                is_infinite(element) = .true.
                exit
@@ -61,17 +59,13 @@ contains
       call ieee_set_flag(ieee_usual, .false.)
    end subroutine check_hex8_jacobians
 
-   !> det(dx/dxi) of the trilinear HEX8 map with nodal coordinates x(3, 8) at natural point xi.
-   pure real(dp) function jacobian_determinant(x, xi) result(determinant)
-      real(dp), intent(in) :: x(3, 8), xi(3)
-      real(dp) :: derivatives(3, 8), jacobian(3, 3), factors(3)
-      integer :: a
-      do a = 1, 8
-         factors = 1 + hex8_natural(:, a)*xi
-         derivatives(1, a) = hex8_natural(1, a)*factors(2)*factors(3)/8
-         derivatives(2, a) = hex8_natural(2, a)*factors(1)*factors(3)/8
-         derivatives(3, a) = hex8_natural(3, a)*factors(1)*factors(2)/8
-      end do
+   !> det(dx/dxi) of the cell's map x(xi) = sum_a N_a(xi) x_a with nodal coordinates x(3, n_nodes)
+   !> at natural point xi.
+   pure real(dp) function jacobian_determinant(cell, x, xi) result(determinant)
+      type(hex8_cell_t), intent(in) :: cell
+      real(dp), intent(in) :: x(:, :), xi(:)
+      real(dp) :: values(cell%n_nodes), derivatives(3, cell%n_nodes), jacobian(3, 3)
+      call cell%shape_functions(xi, values, derivatives)
       jacobian = matmul(x, transpose(derivatives))    ! jacobian(i, k) = d x_i / d xi_k
       determinant = jacobian(1, 1)*(jacobian(2, 2)*jacobian(3, 3) - jacobian(3, 2)*jacobian(2, 3)) &
                     - jacobian(1, 2)*(jacobian(2, 1)*jacobian(3, 3) - jacobian(3, 1)*jacobian(2, 3)) &

@@ -5,7 +5,8 @@ module test_field_recovery
    use frix_strings, only: to_string
    use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains
    use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises, &
-                                  von_mises_field, hex8_node_signs
+                                  von_mises_field
+   use frix_hex8_cell, only: hex8_corner
    implicit none
    private
 
@@ -63,12 +64,12 @@ contains
       real(dp) :: gp(1, 8, 1), nodal(1, 8), expected
       integer :: g, a
       do g = 1, 8
-         gp(1, g, 1) = field(real(hex8_node_signs(:, g), dp)/sqrt(3.0_dp))
+         gp(1, g, 1) = field(real(hex8_corner(:, g), dp)/sqrt(3.0_dp))
       end do
       call nodal_extrapolated(reshape([(a, a=1, 8)], [8, 1]), gp, nodal, error)
       if (allocated(error)) return
       do a = 1, 8
-         expected = field(real(hex8_node_signs(:, a), dp))
+         expected = field(real(hex8_corner(:, a), dp))
          call check_close(error, nodal(1, a), expected, tight, tight*15.0_dp, 'corner '//to_string(a))
          if (allocated(error)) return
       end do
