@@ -22,7 +22,7 @@ bolt; every history value is of the model, forces in kN, displacements in m):
   (docs/verification/s2.md, "Elastic stiffness": the estimate itself moves by 12 % between
   the clamp at the hinge line and at the fillet's toe, and the bolt head bonded over the
   washer's area stiffens the flange);
-- with --reference: the history columns at the increments listed in FILE for BASE (frix
+- with --reference: the history columns at the times t listed in FILE for BASE (frix
   regression values) to 1e-6 of the largest value of the row.
 """
 import argparse
@@ -85,14 +85,18 @@ def check_reference(h, base, path):
         if not fields or line.startswith("#") or fields[0] != base:
             continue
         found = True
-        row = int(fields[1]) - 1
+        time = float(fields[1])
+        rows = [i for i, t in enumerate(h["time"]) if abs(t - time) <= 1e-9]
+        check(len(rows) == 1, "t = %g written once" % time)
+        if len(rows) != 1:
+            continue
         stored = [float(v) for v in fields[2:]]
-        now = [h[n][row] for n in names[3:]]
+        now = [h[n][rows[0]] for n in names[3:]]
         scale = max(abs(v) for v in stored)
         worst = max(abs(a - b) for a, b in zip(now, stored)) / scale
-        check(len(stored) == len(now) and worst <= 1e-6, "increment %d: history against the "
+        check(len(stored) == len(now) and worst <= 1e-6, "t = %g: history against the "
               "regression values (largest difference %.2e of the row's largest value)"
-              % (row + 1, worst))
+              % (time, worst))
     check(found, "regression values for %s in %s" % (base, path))
 
 
