@@ -6,7 +6,9 @@ usage: plot_s2.py RUNS_DIR OUT_DIR
 RUNS_DIR holds one folder per deck, named as the deck (s2_eas9/, s2_eas9_fine/, ...), each with
 the run's output (frix DECK --out RUNS_DIR/BASE). Writes into OUT_DIR:
 - s2_load_displacement.png: the T-stub's force against the web displacement for the runs
-  found, with the EN 1993-1-8 resistances and the seed's ~550 kN at 2 mm;
+  found (for EAS 9 also against the rise of the flange's face under the web: node set heel,
+  the history column after cn_pair1), with the EN 1993-1-8 resistances
+  and the seed's ~550 kN at 2 mm;
 - s2_bolt_prying.png: the bolt force (per bolt) and the prying force of the T-stub against the
   T-stub's force (coarse and fine EAS 9, and the preloaded deck);
 and prints per run the force at 0.5, 1 and 2 mm, the plastic resistance (tangent
@@ -75,6 +77,11 @@ def main():
                   en.value_at(u, prying, 2.0), x_q))
         line, = ax.plot([0.0] + u, [0.0] + force, label=label)
         if base in ("s2_eas9", "s2_eas9_fine"):
+            history = en.read_history(path)
+            names = list(history)
+            heel = [1000 * v for v in history[names[names.index("cn_pair1") + 1]]]
+            ax.plot([0.0] + heel, [0.0] + force, "--", color=line.get_color(), lw=0.9,
+                    label=label + ": against the flange's rise under the web (heel)")
             ax.plot([0, u_p, 2.0], [0, f_p, f_p + k_pl * (2.0 - u_p)], ":", color=line.get_color(),
                     lw=0.8)
             ax.plot([u_p], [f_p], "o", color=line.get_color(), ms=4)
@@ -87,7 +94,7 @@ def main():
         ax.axhline(modes[name], color="grey", lw=0.7, ls="--")
         ax.text(0.05, modes[name] + 5, "%s %.0f kN" % (text, modes[name]), fontsize=8, color="grey")
     ax.plot([2.0], [550.0], "k*", ms=10, label="seed (CARAT), about 550 kN at 2 mm")
-    ax.set_xlabel("web displacement (mm)")
+    ax.set_xlabel("displacement (mm): of the web's top (solid), of the heel (dashed)")
     ax.set_ylabel("T-stub force F (kN)")
     ax.set_xlim(0, 2.05)
     ax.set_ylim(0, 700)
