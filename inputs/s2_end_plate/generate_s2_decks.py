@@ -160,7 +160,7 @@ def build(refine):
         for j in range(len(ys) - 1):
             for k in range(len(z_web) - 1):
                 plate.append(brick(web, i, j, k))
-                add_faces(groups, plate[-1], i == 0, j == 0, top=("web_top", k == len(z_web) - 2))
+                add_faces(groups, plate[-1], i == 0, j == 0, top=k == len(z_web) - 2)
     for i in range(len(xs) - 1):
         for j in range(len(ys) - 1):
             if inside(centre[i], X_BOLT, WASHER) and inside(middle[j], Y_BOLT, WASHER):
@@ -181,15 +181,17 @@ def bottom_face(h):
     return [h[0], h[3], h[2], h[1]]             # outward normal -z
 
 
-def add_faces(groups, h, on_x0, on_y0, bottom=False, top=("", False)):
+def add_faces(groups, h, on_x0, on_y0, bottom=False, top=False):
+    """Put the faces of hexahedron h that lie on x = 0, y = 0, the flange's bottom or the web's
+    top into their groups, each oriented outwards."""
     if on_x0:
         groups["sym_x"].append([h[0], h[4], h[7], h[3]])
     if on_y0:
         groups["sym_y"].append([h[0], h[1], h[5], h[4]])
     if bottom:
         groups["flange_bottom"].append(bottom_face(h))
-    if top[1]:
-        groups[top[0]].append([h[4], h[5], h[6], h[7]])
+    if top:
+        groups["web_top"].append([h[4], h[5], h[6], h[7]])
 
 
 def number(v):
