@@ -72,6 +72,8 @@ Z_FILLET = T_F + R_ROOT                       # 33: the fillet's end on the web
 YOUNG, NU, SIGY_PLATE, SIGY_BOLT = 2.1e8, 0.3, 2.4e5, 1.0e6
 # the seed's penalty pairs (EPSN, EPST), read as multiples of the flange's stiffness scale M/t_f
 PENALTY_PAIRS = [(1e3, 1e1), (1e2, 1e2), (1e3, 1e2), (1e4, 1e2)]
+# the seed's pair scaled down by 1e3 and 1e4: where the penalty starts to matter
+SOFT_PAIRS = [(1e0, 1e-2), (1e-1, 1e-3)]
 CONSTRAINED_MODULUS = YOUNG * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
 PENALTY_SCALE = CONSTRAINED_MODULUS / (T_F / 1000.0)                         # kN/m^3
 
@@ -345,7 +347,7 @@ def write_decks(counts):
     write("s2_hex8", deck(coarse, counts[coarse], 0, seed, "Coarse mesh, plain HEX8 (EAS 0)."))
     write("s2_eas9_preload", deck(coarse, counts[coarse], 9, seed, "Coarse mesh, HEX8 EAS 9, "
                                   "the seed's penalties, bolt preload.", variant=PRELOADED))
-    for pair in PENALTY_PAIRS[1:]:
+    for pair in PENALTY_PAIRS[1:] + SOFT_PAIRS:
         write("s2_eas9_n%g_t%g" % pair, deck(coarse, counts[coarse], 9, pair,
                                              "Coarse mesh, HEX8 EAS 9, penalties (%g, %g)." % pair))
 
