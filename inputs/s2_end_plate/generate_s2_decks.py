@@ -305,8 +305,10 @@ U_END, N_INC = 0.002, 20
 PLAIN = dict(
     preload_text="",
     curves="CURVE 1 POINTS 0.0 0.0  1.0 1.0\n",
-    supports="SET bolt_end DOF 1 1 1 VAL 0.0 0.0 0.0              // the nut on the end plate's far side\n"
-             "SET web_top  DOF 1 0 1 VAL 0.0 0.0 {u_end:g} CURVE 0 0 1   // pulled off the end plate\n",
+    supports="SET bolt_end DOF 1 1 1 VAL 0.0 0.0 0.0              "
+             "// the nut on the end plate's far side\n"
+             "SET web_top  DOF 1 0 1 VAL 0.0 0.0 {u_end:g} CURVE 0 0 1   "
+             "// pulled off the end plate\n",
     steps="STEP 1 NUMSTEP {n_inc} CONTROL Displacement\n")
 
 # Bolt preload by the turn of the nut: step 1 moves the bolt's end by -PRELOAD_SHORTENING (m)
@@ -314,13 +316,17 @@ PLAIN = dict(
 # F_p,C = 0.7 f_ub A_s = 171.5 kN of EN 1993-1-8 3.6.1 (the run reports the force reached).
 PRELOAD_SHORTENING, PRELOAD_INCREMENTS = 2.05e-4, 5
 PRELOADED = dict(
-    preload_text="\n Bolt preload by the turn of the nut: step 1 moves the bolt's end by {shortening:g} m\n"
+    preload_text="\n Bolt preload by the turn of the nut: step 1 moves the bolt's end by "
+                 "{shortening:g} m\n"
                  " (u_z, in {n_pre} increments) with the web held, towards the EN 1993-1-8 3.6.1\n"
                  " preload F_p,C = 0.7 f_ub A_s = 171.5 kN; step 2 pulls the web.",
-    curves="CURVE 1 POINTS 0.0 0.0  1.0 0.0  2.0 1.0      // the web: held in step 1, pulled in step 2\n"
-           "CURVE 2 POINTS 0.0 0.0  1.0 1.0  2.0 1.0      // the nut: turned in step 1, then held\n",
+    curves="CURVE 1 POINTS 0.0 0.0  1.0 0.0  2.0 1.0      "
+           "// the web: held in step 1, pulled in step 2\n"
+           "CURVE 2 POINTS 0.0 0.0  1.0 1.0  2.0 1.0      "
+           "// the nut: turned in step 1, then held\n",
     supports="SET bolt_end DOF 1 1 1 VAL 0.0 0.0 -{shortening:g} CURVE 0 0 2   // the nut turned\n"
-             "SET web_top  DOF 1 0 1 VAL 0.0 0.0 {u_end:g} CURVE 0 0 1   // pulled off the end plate\n",
+             "SET web_top  DOF 1 0 1 VAL 0.0 0.0 {u_end:g} CURVE 0 0 1   "
+             "// pulled off the end plate\n",
     steps="STEP 1 NUMSTEP {n_pre} CONTROL Displacement      // preload\n"
           "STEP 2 NUMSTEP {n_inc} CONTROL Displacement\n")
 

@@ -37,7 +37,8 @@ def prying_centroid(path):
     pressure and its tributary area on the flange's structured face grid."""
     with open(path) as f:
         rows = list(csv.DictReader(f))
-    last = [r for r in rows if (r["step"], r["increment"]) == (rows[-1]["step"], rows[-1]["increment"])]
+    end = (rows[-1]["step"], rows[-1]["increment"])
+    last = [r for r in rows if (r["step"], r["increment"]) == end]
     xs = sorted({round(float(r["x"]), 9) for r in last})
     ys = sorted({round(float(r["y"]), 9) for r in last})
 
@@ -86,11 +87,12 @@ def main():
                     lw=0.8)
             ax.plot([u_p], [f_p], "o", color=line.get_color(), ms=4)
         if base in ("s2_eas9", "s2_eas9_fine", "s2_eas9_preload"):
-            ax2.plot(force, bolt, "-", color=line.get_color(), label="bolt force per bolt, " + label)
+            ax2.plot(force, bolt, "-", color=line.get_color(),
+                     label="bolt force per bolt, " + label)
             ax2.plot(force, prying, "--", color=line.get_color(),
                      label="prying force of the T-stub, " + label)
-    for name, text in (("mode1_method1", "EN mode 1, Method 1"), ("mode1_method2", "EN mode 1, Method 2"),
-                       ("mode2", "EN mode 2")):
+    for name, text in (("mode1_method1", "EN mode 1, Method 1"),
+                       ("mode1_method2", "EN mode 1, Method 2"), ("mode2", "EN mode 2")):
         ax.axhline(modes[name], color="grey", lw=0.7, ls="--")
         ax.text(0.05, modes[name] + 5, "%s %.0f kN" % (text, modes[name]), fontsize=8, color="grey")
     ax.plot([2.0], [550.0], "k*", ms=10, label="seed (CARAT), about 550 kN at 2 mm")

@@ -24,7 +24,6 @@ Sources (all partial factors gamma = 1):
   Table 8.1 case 1a).
 """
 import csv
-import math
 import os
 import sys
 
