@@ -170,7 +170,7 @@ contains
       modulus = self%xi**2*slope/(self%eta*self%eta_bar)
       volumetric = (pressure - self%xi*cohesion/self%eta)/(bulk + modulus)
       if (.not. (volumetric >= 0.0_dp .and. bulk + modulus > 0.0_dp)) then
-         call fatal_error(error, self%name//': no return onto the surface (softening HARD too steep?)')
+         call fatal_error(error, self%name//': no return onto the yield surface (trial p = '//to_string(pressure)//')')
          return
       end if
       outcome%stress = [1.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]*(pressure - bulk*volumetric)

@@ -112,7 +112,7 @@ contains
       if (allocated(error)) return
       outcome%region = principal%region
       outcome%alpha_increment = principal%alpha_increment
-      outcome%stress = stress_of_tensor(matmul(directions, matmul(diagonal(principal%stress), transpose(directions))))
+      outcome%stress = spectral_stress(principal%stress, directions)
       outcome%tangent = spectral_tangent(principal, strains, directions)
    end subroutine mohr_coulomb_corrector
 
@@ -222,21 +222,23 @@ contains
       type(principal_return_t), intent(out) :: principal
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: modulus, volumetric, pressure
+      character(len=:), allocatable :: trial_text
+      trial_text = ' (trial principal stresses '//to_string(trial(1))//', '//to_string(trial(2))//', '// &
+                   to_string(trial(3))//')'
       if (.not. (sin(self%friction_angle) > 0.0_dp .and. sin(self%dilation_angle) > 0.0_dp)) then
-         call fatal_error(error, self%name//': a stress beyond the apex of the cone needs PSI > 0 '// &
-                          '(trial principal stresses '//to_string(trial(1))//', '//to_string(trial(2))// &
-                          ', '//to_string(trial(3))//')')
+         call fatal_error(error, self%name//': a stress beyond the apex of the cone needs PSI > 0'//trial_text)
          return
       end if
       modulus = planes%slope*cos(self%friction_angle)**2/(sin(self%friction_angle)*sin(self%dilation_angle))
       pressure = sum(trial)/3.0_dp
       volumetric = (pressure - planes%cohesion/tan(self%friction_angle))/(planes%bulk + modulus)
       if (.not. (volumetric >= 0.0_dp .and. planes%bulk + modulus > 0.0_dp)) then
-         call fatal_error(error, self%name//': no return onto the surface (softening HARD too steep?)')
+         call fatal_error(error, self%name//': no return onto the yield surface'//trial_text)
          return
       end if
-      principal%stress = pressure - planes%bulk*volumetric
       principal%alpha_increment = volumetric*cos(self%friction_angle)/sin(self%dilation_angle)
+      ! p* - K d eps_v, written as c(alpha) cot(phi): exactly constant for perfect plasticity
+      principal%stress = (planes%cohesion + planes%slope*principal%alpha_increment)/tan(self%friction_angle)
       principal%derivative = planes%bulk*modulus/(planes%bulk + modulus)
       principal%region = region_apex
       principal%tied = .true.
@@ -294,13 +296,18 @@ contains
       end do
    end function spectral_tangent
 
-   pure function diagonal(values) result(matrix)
-      real(dp), intent(in) :: values(3)
-      real(dp) :: matrix(3, 3)
-      integer :: a
-      matrix = 0.0_dp
-      do a = 1, 3
-         matrix(a, a) = values(a)
+   !> sum_a sigma_a n_a x n_a written as sigma_2 1 + (sigma_1 - sigma_2) n_1 x n_1 + (sigma_3 -
+   !> sigma_2) n_3 x n_3: exactly isotropic at the apex, one direction only on an edge.
+   pure function spectral_stress(values, directions) result(stress)
+      real(dp), intent(in) :: values(3), directions(3, 3)
+      real(dp) :: stress(6)
+      real(dp) :: tensor(3, 3)
+      integer :: i
+      tensor = (values(1) - values(2))*spread(directions(:, 1), 2, 3)*spread(directions(:, 1), 1, 3) &
+               + (values(3) - values(2))*spread(directions(:, 3), 2, 3)*spread(directions(:, 3), 1, 3)
+      do i = 1, 3
+         tensor(i, i) = tensor(i, i) + values(2)
       end do
-   end function diagonal
+      stress = stress_of_tensor(tensor)
+   end function spectral_stress
 end module frix_mohr_coulomb
