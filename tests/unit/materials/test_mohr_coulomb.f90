@@ -16,15 +16,15 @@ module test_mohr_coulomb
    use frix_frictional_plasticity, only: state_eqps, state_region, state_plastic_strain, state_alpha, &
                                          region_elastic, region_surface, region_edge, region_apex
    use test_material_checks, only: check_tangent_by_differences, material_response, check_matrix_close
-   use test_soil_paths, only: make_soil, mixed_control, trial_strain, principal_stresses, mohr_coulomb_excess, &
-                              rotation, n_state
+   use test_soil_paths, only: make_soil, mixed_control, trial_strain, mohr_coulomb_excess, rotation, n_state, &
+                              confining, consolidate, triaxial
    implicit none
    private
 
    public :: collect_mohr_coulomb
 
    character(len=*), parameter :: law = 'MAT_3DMohrCoulomb'
-   real(dp), parameter :: cohesion = 10.0_dp, phi = 30.0_dp, confining = -100.0_dp
+   real(dp), parameter :: cohesion = 10.0_dp, phi = 30.0_dp
    real(dp), parameter :: pi = 3.14159265358979323846264338327950_dp
    real(dp), parameter :: sin_phi = 0.5_dp, cos_phi = 0.86602540378443864676372317075294_dp
 
@@ -45,58 +45,6 @@ contains
                new_unittest('tangent vs differences: coinciding trial values, plastic history, finite strain', &
                             test_tangent_special)]
    end subroutine collect_mohr_coulomb
-
-   !> Isotropic compression to sigma = `confining` 1 from the virgin state.
-   subroutine consolidate(error, material, strain, state)
-      type(error_t), allocatable, intent(out) :: error
-      class(material_t), intent(in) :: material
-      real(dp), intent(out) :: strain(6), state(n_state)
-      real(dp) :: stress(6)
-      strain = 0.0_dp
-      state = 0.0_dp
-      call mixed_control(error, material, strain, [1, 2, 3], [confining, confining, confining], state, stress)
-   end subroutine consolidate
-
-   !> Axial (z) strain steps of `step` at lateral stresses `confining` until `n_steps`; the
-   !> stress and history at the end, and the plastic strain increment of the last step.
-   subroutine triaxial(error, material, step, n_steps, stress, state, plastic_step)
-      type(error_t), allocatable, intent(out) :: error
-      class(material_t), intent(in) :: material
-      real(dp), intent(in) :: step
-      integer, intent(in) :: n_steps
-      real(dp), intent(out) :: stress(6), state(n_state), plastic_step(6)
-      real(dp) :: strain(6), before(6)
-      integer :: k
-      call consolidate(error, material, strain, state)
-      if (allocated(error)) return
-      do k = 1, n_steps
-         before = state(state_plastic_strain:state_plastic_strain + 5)
-         strain(3) = strain(3) + step
-         call lateral_control(error, material, strain, state, stress)
-         if (allocated(error)) return
-      end do
-      plastic_step = state(state_plastic_strain:state_plastic_strain + 5) - before
-   end subroutine triaxial
-
-   !> The lateral strains eps_xx = eps_yy (one unknown: on an edge of the surface the tangent has
-   !> no stiffness against eps_xx - eps_yy) so that sigma_xx = `confining`, by Newton.
-   subroutine lateral_control(error, material, strain, state, stress)
-      type(error_t), allocatable, intent(out) :: error
-      class(material_t), intent(in) :: material
-      real(dp), intent(inout) :: strain(6), state(n_state)
-      real(dp), intent(out) :: stress(6)
-      real(dp) :: tangent(6, 6), new(n_state)
-      integer :: iteration
-      do iteration = 1, 60
-         call material_response(error, material, strain, stress, tangent, .false., state, new)
-         if (allocated(error)) return
-         if (abs(stress(1) - confining) <= 1.0e-11_dp*maxval(abs(stress))) exit
-         strain(1:2) = strain(1:2) - (stress(1) - confining)/(tangent(1, 1) + tangent(1, 2))
-      end do
-      call check(error, abs(stress(1) - confining) <= 1.0e-11_dp*maxval(abs(stress)) .and. &
-                 abs(stress(2) - confining) <= 1.0e-11_dp*maxval(abs(stress)), 'lateral control did not converge')
-      state = new
-   end subroutine lateral_control
 
    !> sigma_1 = sigma_2 = -100 >= sigma_3 = sigma_zz: f = 0 gives sigma_3 = (sigma_1 (1 + sin phi)
    !> - 2 c cos phi) / (1 - sin phi); flow b_1 + b_3 = (1 + sin psi, 1 + sin psi, -2 (1 - sin psi))

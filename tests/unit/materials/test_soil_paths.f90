@@ -14,15 +14,17 @@ module test_soil_paths
    use frix_linear_elastic, only: hooke_tangent
    use frix_symmetric_tensor, only: tensor_of_stress, strain_of_tensor
    use frix_logarithmic_strain, only: symmetric_eigen3
+   use frix_frictional_plasticity, only: state_plastic_strain
    use test_material_checks, only: material_response
    implicit none
    private
 
    public :: make_soil, mixed_control, trial_strain, principal_stresses, mohr_coulomb_excess, rotation
-   public :: young, poisson, n_state
+   public :: young, poisson, n_state, confining, consolidate, triaxial
 
    real(dp), parameter :: young = 20000.0_dp, poisson = 0.3_dp
    integer, parameter :: n_state = 10
+   real(dp), parameter :: confining = -100.0_dp   !! cell pressure of the triaxial and shear paths
 
 contains
 
@@ -48,6 +50,58 @@ contains
          error stop 'test_soil_paths: invalid soil'
       end if
    end subroutine make_soil
+
+   !> Isotropic compression to sigma = `confining` 1 from the virgin state.
+   subroutine consolidate(error, material, strain, state)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), intent(in) :: material
+      real(dp), intent(out) :: strain(6), state(n_state)
+      real(dp) :: stress(6)
+      strain = 0.0_dp
+      state = 0.0_dp
+      call mixed_control(error, material, strain, [1, 2, 3], [confining, confining, confining], state, stress)
+   end subroutine consolidate
+
+   !> Axial (z) strain steps of `step` at lateral stresses `confining` until `n_steps`; the
+   !> stress and history at the end, and the plastic strain increment of the last step.
+   subroutine triaxial(error, material, step, n_steps, stress, state, plastic_step)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), intent(in) :: material
+      real(dp), intent(in) :: step
+      integer, intent(in) :: n_steps
+      real(dp), intent(out) :: stress(6), state(n_state), plastic_step(6)
+      real(dp) :: strain(6), before(6)
+      integer :: k
+      call consolidate(error, material, strain, state)
+      if (allocated(error)) return
+      do k = 1, n_steps
+         before = state(state_plastic_strain:state_plastic_strain + 5)
+         strain(3) = strain(3) + step
+         call lateral_control(error, material, strain, state, stress)
+         if (allocated(error)) return
+      end do
+      plastic_step = state(state_plastic_strain:state_plastic_strain + 5) - before
+   end subroutine triaxial
+
+   !> The lateral strains eps_xx = eps_yy (one unknown: on an edge of the surface the tangent has
+   !> no stiffness against eps_xx - eps_yy) so that sigma_xx = `confining`, by Newton.
+   subroutine lateral_control(error, material, strain, state, stress)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), intent(in) :: material
+      real(dp), intent(inout) :: strain(6), state(n_state)
+      real(dp), intent(out) :: stress(6)
+      real(dp) :: tangent(6, 6), new(n_state)
+      integer :: iteration
+      do iteration = 1, 60
+         call material_response(error, material, strain, stress, tangent, .false., state, new)
+         if (allocated(error)) return
+         if (abs(stress(1) - confining) <= 1.0e-11_dp*maxval(abs(stress))) exit
+         strain(1:2) = strain(1:2) - (stress(1) - confining)/(tangent(1, 1) + tangent(1, 2))
+      end do
+      call check(error, abs(stress(1) - confining) <= 1.0e-11_dp*maxval(abs(stress)) .and. &
+                 abs(stress(2) - confining) <= 1.0e-11_dp*maxval(abs(stress)), 'lateral control did not converge')
+      state = new
+   end subroutine lateral_control
 
    !> Mixed control from the committed history `state`: the strain components `free` are solved
    !> (Newton with the law's tangent) so that stress(free) = target, the others are as given in
