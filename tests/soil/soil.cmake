@@ -1,0 +1,9 @@
+# Soil plasticity (Mohr-Coulomb, Drucker-Prager) on decks: a true triaxial test of a
+# Mohr-Coulomb sample against its closed form in every increment, and restarted inside step 1,
+# before yield and in plastic loading, ending bit for bit where the uninterrupted run ends.
+add_test(NAME soil_triaxial_mohr_coulomb COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/soil/check_triaxial.py
+         ${FRIX_BIN} ${CMAKE_CURRENT_SOURCE_DIR}/soil/triaxial_mohr_coulomb.dck)
+add_test(NAME restart_triaxial_mohr_coulomb COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/soil/triaxial_mohr_coulomb.dck 1.1 2.4 2.6)
+set_tests_properties(soil_triaxial_mohr_coulomb restart_triaxial_mohr_coulomb PROPERTIES LABELS "regression;plasticity"
+                     TIMEOUT ${scaled_60})
