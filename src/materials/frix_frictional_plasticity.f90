@@ -16,7 +16,8 @@
 !>   EQPS     sum of sqrt(2/3 d eps_p : d eps_p) over the increments (as for von Mises)
 !>   YIELDED  1 when the point yielded in the increment, else 0
 !>   REGION   where the return went: 0 elastic, 1 the smooth surface (a Mohr-Coulomb plane, the
-!>            Drucker-Prager cone), 2 an edge (two Mohr-Coulomb planes), 3 the apex
+!>            Drucker-Prager cone), 2 an edge (two Mohr-Coulomb planes), 3 the apex, 4 a
+!>            return involving the tension cut-off of Mohr-Coulomb
 !>   EPSP_XX .. EPSP_YZ  the plastic strain (engineering shears)
 !>   alpha    the hardening variable (internal: restart data, not shown)
 module frix_frictional_plasticity
@@ -32,7 +33,7 @@ module frix_frictional_plasticity
 
    public :: frictional_plastic_t, return_outcome_t, read_frictional_properties
    public :: state_eqps, state_yielded, state_region, state_plastic_strain, state_alpha
-   public :: region_elastic, region_surface, region_edge, region_apex
+   public :: region_elastic, region_surface, region_edge, region_apex, region_tension
 
    integer, parameter :: state_eqps = 1
    integer, parameter :: state_yielded = 2
@@ -42,6 +43,7 @@ module frix_frictional_plasticity
    integer, parameter :: n_history = 10
 
    integer, parameter :: region_elastic = 0, region_surface = 1, region_edge = 2, region_apex = 3
+   integer, parameter :: region_tension = 4   !! a return involving the tension cut-off
 
    real(dp), parameter :: degree = 0.017453292519943295769236907684886_dp  !! pi / 180
 

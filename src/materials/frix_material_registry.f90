@@ -13,9 +13,9 @@
 !>   MAT_3DMisesPlastic            von Mises plasticity (frix_von_mises_plastic): also SIGY,
 !>                                 HARD, SIGINF, DELTA, EPSPk/SIGYk, KINH (docs/materials.md)
 !>   MAT_3DMohrCoulomb             Mohr-Coulomb plasticity (frix_mohr_coulomb): YOUNG, NUE,
-!>                                 COHESION, PHI, PSI, HARD, DENS
-!>   MAT_3DDruckerPrager           Drucker-Prager plasticity (frix_drucker_prager): the same and
-!>                                 MATCH (1 outer cone, 2 inner cone, 3 plane strain)
+!>                                 COHESION, PHI, PSI, TENSION, HARD, DENS
+!>   MAT_3DDruckerPrager           Drucker-Prager plasticity (frix_drucker_prager): the same but
+!>                                 TENSION, and MATCH (1 outer cone, 2 inner cone, 3 plane strain)
 module frix_material_registry
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error

@@ -322,7 +322,13 @@ contains
          if (allocated(error)) return
       end do
       call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'MATCH   '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, 1.0_dp], &
-                         'unknown property "MATCH" (valid: YOUNG, NUE, DENS, COHESION, PHI, PSI, HARD)')
+                         'unknown property "MATCH" (valid: YOUNG, NUE, DENS, COHESION, PHI, PSI, HARD, TENSION)')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, &
+                         17.4_dp], 'TENSION must lie in [0, COHESION cot(PHI)) = [0, 17.3205')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DDruckerPrager', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, &
+                         0.0_dp, 5.0_dp], 'unknown property "TENSION"')
       if (allocated(error)) return
       call check_failure(error, 'MAT_3DDruckerPrager', [names, 'MATCH   '], &
                          [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, 4.0_dp], &

@@ -14,9 +14,11 @@ module test_mohr_coulomb
    use frix_linear_elastic, only: hooke_tangent
    use frix_symmetric_tensor, only: tensor_of_stress
    use frix_frictional_plasticity, only: state_eqps, state_region, state_plastic_strain, state_alpha, &
-                                         region_elastic, region_surface, region_edge, region_apex
+                                         region_elastic, region_surface, region_edge, region_apex, region_tension
+   use frix_material_registry, only: create_material
    use test_material_checks, only: check_tangent_by_differences, material_response, check_matrix_close
-   use test_soil_paths, only: make_soil, mixed_control, trial_strain, mohr_coulomb_excess, rotation, n_state, &
+   use test_soil_paths, only: make_soil, young, poisson, mixed_control, trial_strain, mohr_coulomb_excess, rotation, n_state, &
+                              principal_stresses, &
                               confining, consolidate, triaxial
    implicit none
    private
@@ -43,7 +45,10 @@ contains
                new_unittest('unloading is elastic', test_unloading), &
                new_unittest('tangent vs differences: each region, (non-)associated, hardening', test_tangents), &
                new_unittest('tangent vs differences: coinciding trial values, plastic history, finite strain', &
-                            test_tangent_special)]
+                            test_tangent_special), &
+               new_unittest('tension cut-off: uniaxial tension stops at sigma = t, flow along sigma_1', test_tension_uniaxial), &
+               new_unittest('tension cut-off: returns onto the cut-off, its edges, its corner with the plane, its apex', &
+                            test_tension_regions)]
    end subroutine collect_mohr_coulomb
 
    !> sigma_1 = sigma_2 = -100 >= sigma_3 = sigma_zz: f = 0 gives sigma_3 = (sigma_1 (1 + sin phi)
@@ -293,4 +298,84 @@ contains
       if (allocated(error)) return
       call check_tangent_by_differences(error, material, green, 1.0e-6_dp, 'finite strain', .true., state)
    end subroutine test_tangent_special
+
+   !> The law with a tension cut-off t = 5 < c cot(phi) = 17.3 (and the other properties as above).
+   subroutine make_cut_off_soil(material, psi, hard)
+      class(material_t), allocatable, intent(out) :: material
+      real(dp), intent(in) :: psi, hard
+      type(error_t), allocatable :: error
+      call create_material(law, [character(len=8) :: 'YOUNG', 'NUE', 'COHESION', 'PHI', 'PSI', 'HARD', 'TENSION'], &
+                           [young, poisson, cohesion, phi, psi, hard, 5.0_dp], material, error)
+      if (allocated(error)) error stop 'test_mohr_coulomb: invalid soil with a tension cut-off'
+   end subroutine make_cut_off_soil
+
+   !> sigma_yy = sigma_zz = 0, eps_xx increased: without the cut-off the limit would be the
+   !> Mohr-Coulomb tension strength 2 c cos(phi) / (1 + sin(phi)) = 11.5; with t = 5 it is
+   !> sigma_xx = t, and the associated flow of the cut-off is eps_p = d lambda e_1.
+   subroutine test_tension_uniaxial(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      real(dp) :: strain(6), state(n_state), stress(6)
+      integer :: step
+      call make_cut_off_soil(material, 10.0_dp, 0.0_dp)
+      strain = 0.0_dp
+      state = 0.0_dp
+      do step = 1, 10
+         strain(1) = strain(1) + 1.0e-4_dp
+         call mixed_control(error, material, strain, [2, 3], [0.0_dp, 0.0_dp], state, stress)
+         if (allocated(error)) return
+      end do
+      call check_close(error, stress(1), 5.0_dp, 1.0e-12_dp, message='sigma_xx = t')
+      if (allocated(error)) return
+      call check(error, nint(state(state_region)) == region_tension, 'region: cut-off')
+      if (allocated(error)) return
+      call check_close(error, state(state_plastic_strain), 1.0e-3_dp - 5.0_dp/young, 1.0e-10_dp, &
+                       message='eps_p,xx = eps_xx - t / E')
+      if (allocated(error)) return
+      call check(error, all(abs(state(state_plastic_strain + 1:state_plastic_strain + 5)) <= 1.0e-15_dp), &
+                 'eps_p only along x')
+   end subroutine test_tension_uniaxial
+
+   !> Trials onto the cut-off sigma_1 = t, its edge sigma_1 = sigma_2 = t, its apex sigma = t 1
+   !> and its corner with the main plane; the second pair of each with 100 x the stresses.
+   !> Each: no plane violated after the return, REGION 4, and the tangent against differences
+   !> (psi = phi and 10 degrees, H = 0 and 500).
+   subroutine test_tension_regions(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      real(dp), parameter :: trials(3, 4) = reshape([10.0_dp, 0.0_dp, -2.0_dp, 10.0_dp, 9.0_dp, 0.0_dp, &
+                                                     12.0_dp, 11.0_dp, 10.0_dp, 30.0_dp, 0.0_dp, -10.0_dp], [3, 4])
+      integer, parameter :: at_cut_off(4) = [1, 2, 3, 1]   !! principal stresses = t after the return
+      real(dp) :: axes(3, 3), stress(6), tangent(6, 6), state(n_state), new(n_state), psi, hard, s(3)
+      integer :: r, k, h
+      axes = rotation([0.4_dp, -1.0_dp, 0.7_dp], 1.1_dp)
+      state = 0.0_dp
+      do h = 1, 2
+         hard = merge(0.0_dp, 500.0_dp, h == 1)
+         do k = 1, 2
+            psi = merge(phi, 10.0_dp, k == 1)
+            call make_cut_off_soil(material, psi, hard)
+            do r = 1, 4
+               call material_response(error, material, trial_strain(trials(:, r), axes), stress, tangent, &
+                                      .false., state, new)
+               if (allocated(error)) return
+               s = principal_stresses(stress)
+               call check(error, nint(new(state_region)) == region_tension .and. abs(s(1) - 5.0_dp) <= 1.0e-12_dp*20.0_dp &
+                          .and. mohr_coulomb_excess(stress, cohesion + hard*new(state_alpha), phi) <= 1.0e-12_dp*30.0_dp, &
+                          'cut-off return, trial '//to_string(r))
+               if (allocated(error)) return
+               call check(error, count(abs(s - 5.0_dp) <= 1.0e-12_dp*20.0_dp) == at_cut_off(r), &
+                          'principal stresses at the cut-off, trial '//to_string(r))
+               if (allocated(error)) return
+               if (r == 4) call check_close(error, mohr_coulomb_excess(stress, cohesion + hard*new(state_alpha), phi), &
+                                            0.0_dp, 0.0_dp, 1.0e-12_dp*30.0_dp, 'corner: on the main plane too')
+               if (allocated(error)) return
+               call check_tangent_by_differences(error, material, trial_strain(trials(:, r), axes), 1.0e-6_dp, &
+                                                 'cut-off trial '//to_string(r)//', psi '//to_string(psi)//', H '// &
+                                                 to_string(hard), .false., state)
+               if (allocated(error)) return
+            end do
+         end do
+      end do
+   end subroutine test_tension_regions
 end module test_mohr_coulomb
