@@ -12,6 +12,9 @@
 !> planes d alpha = 2 cos(phi) sum(d gamma_i), on the Drucker-Prager cone d alpha = xi d gamma;
 !> at either apex alpha grows with the volumetric plastic strain in the same proportion.
 !>
+!> An initial stress sigma0 (frix_plastic_law) enters as the elastic strain D^-1 sigma0 at zero
+!> strain; the history's plastic strain is then eps - D^-1 (sigma - sigma0).
+!>
 !> History per integration point (n_state = 10):
 !>   EQPS     sum of sqrt(2/3 d eps_p : d eps_p) over the increments (as for von Mises)
 !>   YIELDED  1 when the point yielded in the increment, else 0
@@ -27,7 +30,7 @@ module frix_frictional_plasticity
    use frix_property_list, only: property_list_t
    use frix_material, only: history_name_length
    use frix_plastic_law, only: plastic_law_t
-   use frix_linear_elastic, only: elastic_constants, hooke_tangent, lame_parameters
+   use frix_linear_elastic, only: elastic_constants, hooke_tangent, lame_parameters, hooke_strain
    implicit none
    private
 
@@ -56,8 +59,6 @@ module frix_frictional_plasticity
    end type return_outcome_t
 
    type, abstract, extends(plastic_law_t) :: frictional_plastic_t
-      real(dp) :: young = 0.0_dp              !! E
-      real(dp) :: poisson = 0.0_dp            !! nu
       real(dp) :: cohesion = 0.0_dp           !! c0 (stress unit)
       real(dp) :: friction_angle = 0.0_dp     !! phi (radians)
       real(dp) :: dilation_angle = 0.0_dp     !! psi (radians), 0 <= psi <= phi
@@ -186,7 +187,8 @@ contains
       call commit_history(self, strain, outcome, state_old, state_new)
    end subroutine frictional_return_map
 
-   !> The history after a return: eps_p = eps - D^-1 sigma, EQPS and alpha accumulated.
+   !> The history after a return: eps_p = eps - D^-1 sigma, EQPS and alpha accumulated (`strain`
+   !> includes D^-1 sigma0 of an initial stress, frix_plastic_law).
    subroutine commit_history(self, strain, outcome, state_old, state_new)
       class(frictional_plastic_t), intent(in) :: self
       real(dp), intent(in) :: strain(6)
@@ -198,20 +200,11 @@ contains
       state_new(state_region) = real(outcome%region, dp)
       state_new(state_yielded) = merge(1.0_dp, 0.0_dp, outcome%region /= region_elastic)
       if (outcome%region == region_elastic) return
-      plastic = strain - hooke_strain(self, outcome%stress)
+      plastic = strain - hooke_strain(self%young, self%poisson, outcome%stress)
       increment = plastic - state_old(state_plastic_strain:state_plastic_strain + 5)
       state_new(state_plastic_strain:state_plastic_strain + 5) = plastic
       state_new(state_eqps) = state_old(state_eqps) + &
                               sqrt(2.0_dp/3.0_dp*(sum(increment(1:3)**2) + 0.5_dp*sum(increment(4:6)**2)))
       state_new(state_alpha) = state_old(state_alpha) + outcome%alpha_increment
    end subroutine commit_history
-
-   !> D^-1 sigma: eps = ((1 + nu) sigma - nu tr(sigma) 1) / E, gamma = tau / G.
-   pure function hooke_strain(self, stress) result(strain)
-      class(frictional_plastic_t), intent(in) :: self
-      real(dp), intent(in) :: stress(6)
-      real(dp) :: strain(6)
-      strain(1:3) = ((1.0_dp + self%poisson)*stress(1:3) - self%poisson*sum(stress(1:3)))/self%young
-      strain(4:6) = 2.0_dp*(1.0_dp + self%poisson)*stress(4:6)/self%young
-   end function hooke_strain
 end module frix_frictional_plasticity

@@ -50,8 +50,6 @@ module frix_von_mises_plastic
    real(dp), parameter :: return_tolerance = 1.0e-12_dp
 
    type, extends(plastic_law_t) :: von_mises_plastic_t
-      real(dp) :: young = 0.0_dp              !! E
-      real(dp) :: poisson = 0.0_dp            !! nu
       real(dp) :: kinematic_modulus = 0.0_dp  !! KINH: Prager modulus, d beta = 2/3 KINH d eps_p
       type(hardening_t) :: hardening
    contains

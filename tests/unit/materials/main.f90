@@ -9,6 +9,7 @@ program test_materials
    use test_von_mises, only: collect_von_mises
    use test_mohr_coulomb, only: collect_mohr_coulomb
    use test_drucker_prager, only: collect_drucker_prager
+   use test_initial_stress, only: collect_initial_stress
    implicit none
    call run_suites([new_testsuite('linear_elastic', collect_linear_elastic), &
                     new_testsuite('saint_venant_kirchhoff', collect_saint_venant_kirchhoff), &
@@ -17,5 +18,6 @@ program test_materials
                     new_testsuite('material_registry', collect_material_registry), &
                     new_testsuite('von_mises', collect_von_mises), &
                     new_testsuite('mohr_coulomb', collect_mohr_coulomb), &
-                    new_testsuite('drucker_prager', collect_drucker_prager)])
+                    new_testsuite('drucker_prager', collect_drucker_prager), &
+                    new_testsuite('initial_stress', collect_initial_stress)])
 end program test_materials

@@ -103,10 +103,10 @@ contains
       state = new
    end subroutine lateral_control
 
-   !> Mixed control from the committed history `state`: the strain components `free` are solved
+   !> Mixed control from the committed history `state` (and the initial stress, if given): the strain components `free` are solved
    !> (Newton with the law's tangent) so that stress(free) = target, the others are as given in
    !> `strain`. On return `strain` and `state` are the converged strain and its history.
-   subroutine mixed_control(error, material, strain, free, target, state, stress)
+   subroutine mixed_control(error, material, strain, free, target, state, stress, initial_stress)
       type(error_t), allocatable, intent(out) :: error
       class(material_t), intent(in) :: material
       real(dp), intent(inout) :: strain(6)
@@ -114,10 +114,11 @@ contains
       real(dp), intent(in) :: target(:)
       real(dp), intent(inout) :: state(:)
       real(dp), intent(out) :: stress(6)
+      real(dp), intent(in), optional :: initial_stress(6)   !! sigma0 of initial_stress_response
       real(dp) :: tangent(6, 6), new(size(state)), residual(size(free))
       integer :: iteration
       do iteration = 1, 60
-         call material_response(error, material, strain, stress, tangent, .false., state, new)
+         call material_response(error, material, strain, stress, tangent, .false., state, new, initial_stress)
          if (allocated(error)) return
          residual = stress(free) - target
          if (maxval(abs(residual)) <= 1.0e-11_dp*maxval(abs(stress))) exit
