@@ -99,15 +99,18 @@ contains
       class(material_t), allocatable, intent(out) :: material
       type(error_t), allocatable, intent(out) :: error
       type(mohr_coulomb_t) :: law
+      character(len=:), allocatable :: bound
       law%name = 'MAT_3DMohrCoulomb'
       call read_frictional_properties(properties, law, error, [character(len=8) :: 'TENSION'], &
                                       'YOUNG, NUE, DENS, COHESION, PHI, PSI, HARD, TENSION')
       call properties%take_real('TENSION', law%tension, law%has_tension, error, default=0.0_dp)
       if (law%has_tension .and. .not. allocated(error)) then
-         if (.not. (law%tension >= 0.0_dp .and. law%tension*tan(law%friction_angle) < law%cohesion)) &
+         if (.not. (law%tension >= 0.0_dp .and. law%tension*tan(law%friction_angle) < law%cohesion)) then
+            bound = 'infinity'
+            if (tan(law%friction_angle) > 0.0_dp) bound = to_string(law%cohesion/tan(law%friction_angle))
             call append_error(error, trim(properties%owner)//': TENSION must lie in [0, COHESION cot(PHI)) = [0, '// &
-                              to_string(law%cohesion/max(tan(law%friction_angle), tiny(1.0_dp)))//'), got '// &
-                              to_string(law%tension))
+                              bound//'), got '//to_string(law%tension))
+         end if
       end if
       if (.not. allocated(error)) allocate (material, source=law)
    end subroutine mohr_coulomb_from_properties

@@ -327,6 +327,9 @@ contains
       call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, &
                          17.4_dp], 'TENSION must lie in [0, COHESION cot(PHI)) = [0, 17.3205')
       if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 0.0_dp, 0.0_dp, &
+                         -1.0_dp], 'TENSION must lie in [0, COHESION cot(PHI)) = [0, infinity), got -1')
+      if (allocated(error)) return
       call check_failure(error, 'MAT_3DDruckerPrager', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, &
                          0.0_dp, 5.0_dp], 'unknown property "TENSION"')
       if (allocated(error)) return
