@@ -7,3 +7,7 @@ add_test(NAME restart_triaxial_mohr_coulomb COMMAND bash ${CMAKE_CURRENT_SOURCE_
          ${CMAKE_CURRENT_SOURCE_DIR}/soil/triaxial_mohr_coulomb.dck 1.1 2.4 2.6)
 set_tests_properties(soil_triaxial_mohr_coulomb restart_triaxial_mohr_coulomb PROPERTIES LABELS "regression;plasticity"
                      TIMEOUT ${scaled_60})
+# Soil properties out of range: every one reported at its line and column, no crash.
+add_test(NAME soil_error_properties COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/errors/check_error_case.sh ${FRIX_BIN}
+         ${CMAKE_CURRENT_SOURCE_DIR}/soil/error_mohr_coulomb_properties.dck)
+set_tests_properties(soil_error_properties PROPERTIES LABELS errors)
