@@ -23,8 +23,11 @@
 !>   d alpha = 2 cos(phi) sum(dgamma),
 !> (the sum over the Mohr-Coulomb planes of S only), trying S = {1} (the plane), then {1, 3} and
 !> {1, 2} (the edges); with a tension cut-off {1}, {4}, {1, 3}, {1, 2}, {1, 4}, {4, 5},
-!> {1, 2, 4}, {1, 4, 5}, {4, 5, 6}. A return holds where dgamma >= 0 and no plane is violated
-!> (f_2 > 0 or f_3 > 0 after a plane return is exactly the loss of the principal order). Else
+!> {1, 2, 4}, {1, 3, 4}, {1, 3, 5}, {1, 4, 5}, {3, 4, 5}, {4, 5, 6} (at the point sigma_1 =
+!> sigma_2 = t of the main plane, planes 1, 3, 4 and 5 meet, and which three of them have
+!> multipliers >= 0 depends on the trial and on psi). A return holds where
+!> dgamma >= 0 and no plane is violated (f_2 > 0 or f_3 > 0 after a plane return is exactly the
+!> loss of the principal order). Else
 !> the apex sigma = p 1 with
 !>   p = p* - K d eps_v,   p = c(alpha) cot(phi),   d alpha = cos(phi)/sin(psi) d eps_v
 !> (the same d alpha per volumetric plastic strain as on the planes, tr b_i = 2 sin(psi)).
@@ -62,8 +65,9 @@ module frix_mohr_coulomb
    !> The sets of active planes tried in turn (module header), without and with the cut-off.
    integer, parameter :: max_active = 3
    integer, parameter :: plain_sets(max_active, 3) = reshape([1, 0, 0, 1, 3, 0, 1, 2, 0], [max_active, 3])
-   integer, parameter :: cut_off_sets(max_active, 9) = reshape([1, 0, 0, 4, 0, 0, 1, 3, 0, 1, 2, 0, 1, 4, 0, &
-                                                                4, 5, 0, 1, 2, 4, 1, 4, 5, 4, 5, 6], [max_active, 9])
+   integer, parameter :: cut_off_sets(max_active, 12) = reshape([1, 0, 0, 4, 0, 0, 1, 3, 0, 1, 2, 0, 1, 4, 0, &
+                                                                 4, 5, 0, 1, 2, 4, 1, 3, 4, 1, 3, 5, 1, 4, 5, &
+                                                                 3, 4, 5, 4, 5, 6], [max_active, 12])
 
    type, extends(frictional_plastic_t) :: mohr_coulomb_t
       logical :: has_tension = .false.   !! TENSION given

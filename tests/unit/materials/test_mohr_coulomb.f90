@@ -336,16 +336,18 @@ contains
                  'eps_p only along x')
    end subroutine test_tension_uniaxial
 
-   !> Trials onto the cut-off sigma_1 = t, its edge sigma_1 = sigma_2 = t, its apex sigma = t 1
-   !> and its corner with the main plane; the second pair of each with 100 x the stresses.
+   !> Trials onto the cut-off sigma_1 = t, its edge sigma_1 = sigma_2 = t, its apex sigma = t 1,
+   !> its corner with the main plane, the corner of that edge with the main plane, and the
+   !> corner of the cut-off with the edge sigma_2 = sigma_3 of the Mohr-Coulomb planes.
    !> Each: no plane violated after the return, REGION 4, and the tangent against differences
    !> (psi = phi and 10 degrees, H = 0 and 500).
    subroutine test_tension_regions(error)
       type(error_t), allocatable, intent(out) :: error
       class(material_t), allocatable :: material
-      real(dp), parameter :: trials(3, 4) = reshape([10.0_dp, 0.0_dp, -2.0_dp, 10.0_dp, 9.0_dp, 0.0_dp, &
-                                                     12.0_dp, 11.0_dp, 10.0_dp, 30.0_dp, 0.0_dp, -10.0_dp], [3, 4])
-      integer, parameter :: at_cut_off(4) = [1, 2, 3, 1]   !! principal stresses = t after the return
+      real(dp), parameter :: trials(3, 6) = reshape([10.0_dp, 0.0_dp, -2.0_dp, 10.0_dp, 9.0_dp, 0.0_dp, &
+                                                     12.0_dp, 11.0_dp, 10.0_dp, 30.0_dp, 0.0_dp, -10.0_dp, &
+                                                     30.0_dp, 29.0_dp, -10.0_dp, 80.0_dp, 10.0_dp, 9.0_dp], [3, 6])
+      integer, parameter :: at_cut_off(6) = [1, 2, 3, 1, 2, 1]   !! principal stresses = t after the return
       real(dp) :: axes(3, 3), stress(6), tangent(6, 6), state(n_state), new(n_state), psi, hard, s(3)
       integer :: r, k, h
       axes = rotation([0.4_dp, -1.0_dp, 0.7_dp], 1.1_dp)
@@ -355,7 +357,7 @@ contains
          do k = 1, 2
             psi = merge(phi, 10.0_dp, k == 1)
             call make_cut_off_soil(material, psi, hard)
-            do r = 1, 4
+            do r = 1, 6
                call material_response(error, material, trial_strain(trials(:, r), axes), stress, tangent, &
                                       .false., state, new)
                if (allocated(error)) return
@@ -367,8 +369,11 @@ contains
                call check(error, count(abs(s - 5.0_dp) <= 1.0e-12_dp*20.0_dp) == at_cut_off(r), &
                           'principal stresses at the cut-off, trial '//to_string(r))
                if (allocated(error)) return
-               if (r == 4) call check_close(error, mohr_coulomb_excess(stress, cohesion + hard*new(state_alpha), phi), &
-                                            0.0_dp, 0.0_dp, 1.0e-12_dp*30.0_dp, 'corner: on the main plane too')
+               if (r >= 4) call check_close(error, mohr_coulomb_excess(stress, cohesion + hard*new(state_alpha), phi), &
+                                            0.0_dp, 0.0_dp, 1.0e-12_dp*30.0_dp, 'corner: on the main plane too, trial '// &
+                                            to_string(r))
+               if (allocated(error)) return
+               if (r == 6) call check(error, abs(s(2) - s(3)) <= 1.0e-12_dp*30.0_dp, 'corner: sigma_2 = sigma_3')
                if (allocated(error)) return
                call check_tangent_by_differences(error, material, trial_strain(trials(:, r), axes), 1.0e-6_dp, &
                                                  'cut-off trial '//to_string(r)//', psi '//to_string(psi)//', H '// &
