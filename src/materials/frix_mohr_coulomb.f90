@@ -97,7 +97,7 @@ module frix_mohr_coulomb
 
 contains
 
-   !> The law of deck properties YOUNG NUE DENS COHESION PHI PSI HARD.
+   !> The law of deck properties YOUNG NUE DENS COHESION PHI PSI HARD TENSION.
    subroutine mohr_coulomb_from_properties(properties, material, error)
       type(property_list_t), intent(in) :: properties
       class(material_t), allocatable, intent(out) :: material
