@@ -268,3 +268,5 @@ set_tests_properties(tutorial_pipe_in_soil PROPERTIES LABELS "regression;contact
 include(${CMAKE_CURRENT_SOURCE_DIR}/coupling/coupling.cmake)
 # Thin, long EAS elements (tests/eas_thin)
 include(${CMAKE_CURRENT_SOURCE_DIR}/eas_thin/eas_thin.cmake)
+# Soil plasticity decks (tests/soil).
+include(${CMAKE_CURRENT_SOURCE_DIR}/soil/soil.cmake)

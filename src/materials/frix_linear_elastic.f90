@@ -15,7 +15,7 @@ module frix_linear_elastic
    private
 
    public :: linear_elastic_t, new_linear_elastic, lame_parameters, hooke_tangent
-   public :: linear_elastic_from_properties, elastic_constants
+   public :: linear_elastic_from_properties, elastic_constants, hooke_strain
 
    !> Hooke's law; no history. Valid for 0 < young and -1 < poisson < 0.5 (the registry
    !> checks this before constructing).
@@ -112,6 +112,15 @@ contains
          tangent(i + 3, i + 3) = mu
       end do
    end function hooke_tangent
+
+   !> D^-1 sigma: eps = ((1 + nu) sigma - nu tr(sigma) 1) / E, gamma = tau / G (engineering).
+   pure function hooke_strain(young, poisson, stress) result(strain)
+      real(dp), intent(in) :: young, poisson
+      real(dp), intent(in) :: stress(6)   !! Voigt, tensor shears
+      real(dp) :: strain(6)
+      strain(1:3) = ((1.0_dp + poisson)*stress(1:3) - poisson*sum(stress(1:3)))/young
+      strain(4:6) = 2.0_dp*(1.0_dp + poisson)*stress(4:6)/young
+   end function hooke_strain
 
    pure function linear_elastic_n_state(self) result(n)
       class(linear_elastic_t), intent(in) :: self

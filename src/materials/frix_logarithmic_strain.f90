@@ -18,7 +18,7 @@
 !> so that T . dE_log = (P^T T) . dE.
 module frix_logarithmic_strain
    use frix_kinds, only: dp
-   use frix_symmetric_tensor, only: voigt_i, voigt_j, tensor_of_stress, strain_of_tensor, right_cauchy_green
+   use frix_symmetric_tensor, only: tensor_of_stress, strain_of_tensor, right_cauchy_green, rotated_unit_strain
    implicit none
    private
 
@@ -225,18 +225,4 @@ contains
          eigenvalues(p) = a(p, p)
       end do
    end subroutine symmetric_eigen3
-
-   !> Q^T H_a Q, H_a the strain tensor of a unit engineering Voigt component a = (i, j):
-   !> (Q^T H_a Q)_pq = (Q_ip Q_jq + Q_jp Q_iq) / 2 for a shear, Q_ip Q_iq for a normal component.
-   pure function rotated_unit_strain(q, a) result(tensor)
-      real(dp), intent(in) :: q(3, 3)
-      integer, intent(in) :: a
-      real(dp) :: tensor(3, 3)
-      integer :: r, c
-      do c = 1, 3
-         do r = 1, 3
-            tensor(r, c) = 0.5_dp*(q(voigt_i(a), r)*q(voigt_j(a), c) + q(voigt_j(a), r)*q(voigt_i(a), c))
-         end do
-      end do
-   end function rotated_unit_strain
 end module frix_logarithmic_strain

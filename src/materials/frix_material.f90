@@ -33,6 +33,8 @@ module frix_material
       procedure(elastic_tangent_interface), deferred :: elastic_tangent
       procedure :: history_names
       procedure :: symmetric_tangent
+      !> `response` from an initial (in-situ) stress: the stress at zero strain is sigma0.
+      procedure :: initial_stress_response
    end type material_t
 
    integer, parameter, public :: history_name_length = 16
@@ -88,4 +90,22 @@ contains
       class(material_t), intent(in) :: self
       symmetric_tangent = .true.
    end function symmetric_tangent
+
+   !> The response of a point that starts from the initial stress sigma0 (Cauchy under small
+   !> strain, S under total Lagrangian kinematics; e.g. a soil's geostatic stress): the stress
+   !> at zero strain is sigma0. Default, for the elastic and hyperelastic laws: the response
+   !> plus sigma0 (a prestress; the tangent is unchanged). A plastic law overrides it so that
+   !> its yield condition sees the stress sigma0 + D eps_e (frix_plastic_law).
+   subroutine initial_stress_response(self, strain, finite, initial_stress, state_old, state_new, stress, tangent, error)
+      class(material_t), intent(in) :: self
+      real(dp), intent(in) :: strain(6)           !! eps or E, Voigt, engineering shears
+      logical, intent(in) :: finite
+      real(dp), intent(in) :: initial_stress(6)   !! sigma0, Voigt, tensor shears
+      real(dp), intent(in) :: state_old(:)
+      real(dp), intent(inout) :: state_new(:)
+      real(dp), intent(out) :: stress(6), tangent(6, 6)
+      type(error_t), allocatable, intent(out) :: error
+      call self%response(strain, finite, state_old, state_new, stress, tangent, error)
+      if (.not. allocated(error)) stress = stress + initial_stress
+   end subroutine initial_stress_response
 end module frix_material

@@ -12,6 +12,10 @@
 !>                                 C10 (> 0), D1 (> 0), DENS
 !>   MAT_3DMisesPlastic            von Mises plasticity (frix_von_mises_plastic): also SIGY,
 !>                                 HARD, SIGINF, DELTA, EPSPk/SIGYk, KINH (docs/materials.md)
+!>   MAT_3DMohrCoulomb             Mohr-Coulomb plasticity (frix_mohr_coulomb): YOUNG, NUE,
+!>                                 COHESION, PHI, PSI, TENSION, HARD, DENS
+!>   MAT_3DDruckerPrager           Drucker-Prager plasticity (frix_drucker_prager): the same but
+!>                                 TENSION, and MATCH (1 outer cone, 2 inner cone, 3 plane strain)
 module frix_material_registry
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
@@ -23,6 +27,8 @@ module frix_material_registry
    use frix_neo_hookean, only: neo_hookean_from_properties
    use frix_abaqus_neo_hooke, only: abaqus_neo_hooke_from_properties
    use frix_von_mises_plastic, only: von_mises_from_properties
+   use frix_mohr_coulomb, only: mohr_coulomb_from_properties
+   use frix_drucker_prager, only: drucker_prager_from_properties
    implicit none
    private
 
@@ -58,7 +64,9 @@ contains
                material_entry_t('MAT_Struct_StVenantKirchhoff', saint_venant_kirchhoff_from_properties), &
                material_entry_t('MAT_Struct_NeoHooke', neo_hookean_from_properties), &
                material_entry_t('MAT_Struct_NeoHookeAbaqus', abaqus_neo_hooke_from_properties), &
-               material_entry_t('MAT_3DMisesPlastic', von_mises_from_properties)]
+               material_entry_t('MAT_3DMisesPlastic', von_mises_from_properties), &
+               material_entry_t('MAT_3DMohrCoulomb', mohr_coulomb_from_properties), &
+               material_entry_t('MAT_3DDruckerPrager', drucker_prager_from_properties)]
    end function material_table
 
    !> Names of the implemented material laws, in the spelling of the documentation.

@@ -6,7 +6,8 @@ module frix_symmetric_tensor
    implicit none
    private
 
-   public :: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor, right_cauchy_green
+   public :: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor, stress_of_tensor
+   public :: right_cauchy_green, rotated_unit_strain
 
    !> Voigt index pairs (i, j) of the components xx yy zz xy xz yz.
    integer, parameter :: voigt_i(6) = [1, 2, 3, 1, 1, 2]
@@ -47,6 +48,30 @@ contains
       end do
    end function strain_of_tensor
 
+   !> Voigt stress (tensor shears) of a symmetric tensor.
+   pure function stress_of_tensor(tensor) result(voigt)
+      real(dp), intent(in) :: tensor(3, 3)
+      real(dp) :: voigt(6)
+      integer :: a
+      do a = 1, 6
+         voigt(a) = 0.5_dp*(tensor(voigt_i(a), voigt_j(a)) + tensor(voigt_j(a), voigt_i(a)))
+      end do
+   end function stress_of_tensor
+
+   !> Q^T H_a Q, H_a the strain tensor of a unit engineering Voigt component a = (i, j):
+   !> (Q^T H_a Q)_pq = (Q_ip Q_jq + Q_jp Q_iq) / 2 for a shear, Q_ip Q_iq for a normal component.
+   !> With Q the principal directions (columns), the strain increment H_a in the principal basis.
+   pure function rotated_unit_strain(q, a) result(tensor)
+      real(dp), intent(in) :: q(3, 3)
+      integer, intent(in) :: a
+      real(dp) :: tensor(3, 3)
+      integer :: r, c
+      do c = 1, 3
+         do r = 1, 3
+            tensor(r, c) = 0.5_dp*(q(voigt_i(a), r)*q(voigt_j(a), c) + q(voigt_j(a), r)*q(voigt_i(a), c))
+         end do
+      end do
+   end function rotated_unit_strain
 
    !> C = I + 2 E of a Green-Lagrange strain in Voigt form (engineering shears: C_ij = gamma_ij).
    pure function right_cauchy_green(green) result(c)

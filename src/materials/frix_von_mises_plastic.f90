@@ -15,7 +15,7 @@
 !> Finite strain (Tot_Lagr): the same return in the Lagrangian logarithmic strain space of Miehe,
 !> Apel & Lambrecht (CMAME 191, 2002): eps := E_log = 1/2 ln C, eps_p the plastic part of E_log,
 !> the stress T conjugate to E_log mapped to S = P^T T with the tangent P^T C P + T : d2E_log
-!> (frix_logarithmic_strain). For isotropic elasticity this is the Hencky law with the
+!> (frix_plastic_law, frix_logarithmic_strain). For isotropic elasticity this is the Hencky law with the
 !> exponential-map plasticity of Simo (CMAME 99, 1992) / Eterovic & Bathe (IJNME 30, 1990)
 !> whenever the plastic flow is coaxial; volume-preserving (tr eps_p = 0, det F_p = 1).
 !>
@@ -27,9 +27,9 @@ module frix_von_mises_plastic
    use frix_strings, only: to_string
    use frix_property_list, only: property_list_t
    use frix_material, only: material_t, history_name_length
+   use frix_plastic_law, only: plastic_law_t
    use frix_linear_elastic, only: elastic_constants, lame_parameters, hooke_tangent
    use frix_hardening, only: hardening_t, read_hardening, hardening_names, max_table_points
-   use frix_logarithmic_strain, only: log_strain_t, logarithmic_strain, log_strain_stress, log_strain_tangent
    implicit none
    private
 
@@ -49,14 +49,12 @@ module frix_von_mises_plastic
    !> round-off of a point that is already on the surface and does not load further).
    real(dp), parameter :: return_tolerance = 1.0e-12_dp
 
-   type, extends(material_t) :: von_mises_plastic_t
-      real(dp) :: young = 0.0_dp              !! E
-      real(dp) :: poisson = 0.0_dp            !! nu
+   type, extends(plastic_law_t) :: von_mises_plastic_t
       real(dp) :: kinematic_modulus = 0.0_dp  !! KINH: Prager modulus, d beta = 2/3 KINH d eps_p
       type(hardening_t) :: hardening
    contains
       procedure :: n_state => von_mises_n_state
-      procedure :: response => von_mises_response
+      procedure :: return_map => von_mises_return_map
       procedure :: elastic_tangent => von_mises_elastic_tangent
       procedure :: history_names => von_mises_history_names
    end type von_mises_plastic_t
@@ -134,38 +132,9 @@ contains
       tangent = hooke_tangent(self%young, self%poisson)
    end subroutine von_mises_elastic_tangent
 
-   !> Small strain: the return mapping at eps. Finite strain: at E_log of E, mapped back to S.
-   subroutine von_mises_response(self, strain, finite, state_old, state_new, stress, tangent, error)
-      class(von_mises_plastic_t), intent(in) :: self
-      real(dp), intent(in) :: strain(6)        !! eps or E, Voigt, engineering shears
-      logical, intent(in) :: finite            !! strain is E, stress is S
-      real(dp), intent(in) :: state_old(:)     !! (14) history at the start of the increment
-      real(dp), intent(inout) :: state_new(:)  !! (14) history at this strain
-      real(dp), intent(out) :: stress(6)       !! sigma or S, tensor shears
-      real(dp), intent(out) :: tangent(6, 6)   !! consistent d stress / d strain
-      type(error_t), allocatable, intent(out) :: error
-      type(log_strain_t) :: log_strain
-      real(dp) :: log_stress(6), moduli(6, 6)
-      logical :: valid
-      if (.not. finite) then
-         call return_map(self, strain, state_old, state_new, stress, tangent, error)
-         return
-      end if
-      call logarithmic_strain(strain, log_strain, valid)
-      if (.not. valid) then
-         stress = 0.0_dp
-         tangent = 0.0_dp
-         call fatal_error(error, self%name//': the right Cauchy-Green tensor is not positive definite')
-         return
-      end if
-      call return_map(self, log_strain%strain, state_old, state_new, log_stress, moduli, error)
-      if (allocated(error)) return
-      stress = log_strain_stress(log_strain, log_stress)
-      tangent = log_strain_tangent(log_strain, log_stress, moduli)
-   end subroutine von_mises_response
-
-   !> Radial return at the total strain `strain` (eps, or E_log) from the history state_old.
-   subroutine return_map(self, strain, state_old, state_new, stress, tangent, error)
+   !> Radial return at the total strain `strain` (eps, or E_log: frix_plastic_law) from the
+   !> history state_old.
+   subroutine von_mises_return_map(self, strain, state_old, state_new, stress, tangent, error)
       class(von_mises_plastic_t), intent(in) :: self
       real(dp), intent(in) :: strain(6)
       real(dp), intent(in) :: state_old(:)
@@ -222,7 +191,7 @@ contains
       do i = 1, 6
          tangent(:, i) = tangent(:, i) - 2.0_dp*mu*theta_bar*normal*normal(i)
       end do
-   end subroutine return_map
+   end subroutine von_mises_return_map
 
    !> dgamma > 0 with g(dgamma) = 0 (see the module header): Newton's method kept inside the
    !> bracket [0, |xi_tr| / (2 mu)] (g(0) > 0 >= g at the upper end since K > 0), bisecting when

@@ -33,8 +33,9 @@ contains
    end subroutine check_matrix_close
 
    !> Stress and tangent of a material at `strain` from the history `state_old` (default: none,
-   !> or zeros of the law's size) under small (default) or finite strain; error if the law fails.
-   subroutine material_response(error, material, strain, stress, tangent, finite, state_old, state_new)
+   !> or zeros of the law's size) under small (default) or finite strain, from an initial stress
+   !> if given (initial_stress_response); error if the law fails.
+   subroutine material_response(error, material, strain, stress, tangent, finite, state_old, state_new, initial_stress)
       type(error_t), allocatable, intent(out) :: error
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: strain(6)
@@ -42,12 +43,18 @@ contains
       logical, intent(in), optional :: finite
       real(dp), intent(in), optional :: state_old(:)
       real(dp), intent(out), optional :: state_new(:)
+      real(dp), intent(in), optional :: initial_stress(6)
       real(dp) :: old(material%n_state()), new(material%n_state())
       type(error_t), allocatable :: law_error
       old = 0.0_dp
       if (present(state_old)) old = state_old
       new = 0.0_dp
-      call material%response(strain, optional_true(finite), old, new, stress, tangent, law_error)
+      if (present(initial_stress)) then
+         call material%initial_stress_response(strain, optional_true(finite), initial_stress, old, new, stress, tangent, &
+                                               law_error)
+      else
+         call material%response(strain, optional_true(finite), old, new, stress, tangent, law_error)
+      end if
       if (allocated(law_error)) call fatal_error(error, 'response failed: '//law_error%message)
       if (present(state_new)) state_new = new
    end subroutine material_response
@@ -60,7 +67,7 @@ contains
 
    !> Column j of the tangent vs (S(E + h e_j) - S(E - h e_j)) / (2 h), h = 1e-7 max(1, |E_j|).
    !> Truncation error O(h^2) ~ 1e-14 relative; round-off ~ 1e-16 / h ~ 1e-9 relative.
-   subroutine check_tangent_by_differences(error, material, strain, rel_tol, message, finite, state_old)
+   subroutine check_tangent_by_differences(error, material, strain, rel_tol, message, finite, state_old, initial_stress)
       type(error_t), allocatable, intent(out) :: error
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: strain(6)
@@ -68,22 +75,23 @@ contains
       character(len=*), intent(in) :: message
       logical, intent(in), optional :: finite      !! default: small strain
       real(dp), intent(in), optional :: state_old(:)  !! default: zero history
+      real(dp), intent(in), optional :: initial_stress(6)  !! default: none
       real(dp) :: stress(6), tangent(6, 6), differences(6, 6)
       real(dp) :: stress_plus(6), stress_minus(6), unused(6, 6), perturbed(6), step
       real(dp) :: old(material%n_state())
       integer :: j
       old = 0.0_dp
       if (present(state_old)) old = state_old
-      call material_response(error, material, strain, stress, tangent, finite, old)
+      call material_response(error, material, strain, stress, tangent, finite, old, initial_stress=initial_stress)
       if (allocated(error)) return
       do j = 1, 6
          step = 1.0e-7_dp*max(1.0_dp, abs(strain(j)))
          perturbed = strain
          perturbed(j) = strain(j) + step
-         call material_response(error, material, perturbed, stress_plus, unused, finite, old)
+         call material_response(error, material, perturbed, stress_plus, unused, finite, old, initial_stress=initial_stress)
          if (allocated(error)) return
          perturbed(j) = strain(j) - step
-         call material_response(error, material, perturbed, stress_minus, unused, finite, old)
+         call material_response(error, material, perturbed, stress_minus, unused, finite, old, initial_stress=initial_stress)
          if (allocated(error)) return
          differences(:, j) = (stress_plus - stress_minus)/(2.0_dp*step)
       end do

@@ -33,6 +33,7 @@ contains
                new_unittest('unknown law lists the valid ones', test_unknown_law), &
                new_unittest('MAT_3DMisesPlastic: properties checked', test_plasticity), &
                new_unittest('MAT_3DMisesPlastic: SIGINF, DELTA and 12 table points accepted', test_plasticity_names), &
+               new_unittest('MAT_3DMohrCoulomb, MAT_3DDruckerPrager: properties checked', test_frictional), &
                new_unittest('missing YOUNG', test_missing_young), &
                new_unittest('missing NUE', test_missing_poisson), &
                new_unittest('unknown property', test_unknown_property), &
@@ -151,11 +152,14 @@ contains
       class(material_t), allocatable :: material
       integer :: i
       associate (keywords => material_keywords())
-         call check(error, size(keywords) == 5 .and. len(keywords) == keyword_length, 'five laws')
+         call check(error, size(keywords) == 7 .and. len(keywords) == keyword_length, 'seven laws')
          if (allocated(error)) return
          do i = 1, size(keywords)
             if (keywords(i) == 'MAT_3DMisesPlastic') then
                call create_material(keywords(i), [standard_names, 'SIGY    '], [standard_values, 1.0_dp], material, error)
+            else if (keywords(i) == 'MAT_3DMohrCoulomb' .or. keywords(i) == 'MAT_3DDruckerPrager') then
+               call create_material(keywords(i), [standard_names, 'COHESION', 'PHI     ', 'PSI     '], &
+                                    [standard_values, 10.0_dp, 30.0_dp, 0.0_dp], material, error)
             else if (keywords(i) == 'MAT_Struct_NeoHookeAbaqus') then
                call create_material(keywords(i), [character(len=4) :: 'C10', 'D1', 'DENS'], [80.0_dp, 1.0e-3_dp, 20.0_dp], &
                                     material, error)
@@ -199,7 +203,7 @@ contains
       if (allocated(error)) return
       call check_failure(error, 'MAT_Struct_Foo', standard_names, standard_values, &
                          'valid laws: MAT_Struct_LinearElastic, MAT_Struct_StVenantKirchhoff, MAT_Struct_NeoHooke, '// &
-                         'MAT_Struct_NeoHookeAbaqus, MAT_3DMisesPlastic')
+                         'MAT_Struct_NeoHookeAbaqus, MAT_3DMisesPlastic, MAT_3DMohrCoulomb, MAT_3DDruckerPrager')
    end subroutine test_unknown_law
 
    subroutine test_plasticity(error)
@@ -282,6 +286,57 @@ contains
                          [1000.0_dp, 0.3_dp, 1.0_dp, 1.0_dp], 'unknown property "FOO" (valid: YOUNG, NUE, DENS, '// &
                          'SIGY, HARD, ETAN, SIGINF, DELTA, EPSPk and SIGYk (k = 1..50), KINH)')
    end subroutine test_plasticity_names
+
+   !> The frictional laws: valid properties accepted (history size, symmetric tangent only for
+   !> PSI = PHI), every documented mistake reported.
+   subroutine test_frictional(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=8), parameter :: names(5) = [character(len=8) :: 'YOUNG', 'NUE', 'COHESION', 'PHI', 'PSI']
+      class(material_t), allocatable :: material
+      character(len=32) :: law
+      integer :: k
+      do k = 1, 2
+         law = merge('MAT_3DMohrCoulomb  ', 'MAT_3DDruckerPrager', k == 1)
+         call create_material(law, names, [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 30.0_dp], material, error)
+         if (allocated(error)) return
+         call check(error, material%n_state() == 10 .and. material%symmetric_tangent(), trim(law)//': associated')
+         if (allocated(error)) return
+         call create_material(law, [names, 'HARD    '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 5.0_dp, -50.0_dp], &
+                              material, error)
+         if (allocated(error)) return
+         call check(error, .not. material%symmetric_tangent(), trim(law)//': non-associated is unsymmetric')
+         if (allocated(error)) return
+         call check_failure(error, law, names(1:4), [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp], 'missing property PSI')
+         if (allocated(error)) return
+         call check_failure(error, law, names, [1000.0_dp, 0.3_dp, -1.0_dp, 30.0_dp, 0.0_dp], &
+                            'COHESION must be >= 0, got -1')
+         if (allocated(error)) return
+         call check_failure(error, law, names, [1000.0_dp, 0.3_dp, 10.0_dp, 90.0_dp, 0.0_dp], &
+                            'PHI must lie in [0, 90) degrees, got 90')
+         if (allocated(error)) return
+         call check_failure(error, law, names, [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 31.0_dp], &
+                            'PSI must lie in [0, PHI] degrees, got 31')
+         if (allocated(error)) return
+         call check_failure(error, law, names, [1000.0_dp, 0.3_dp, 0.0_dp, 0.0_dp, 0.0_dp], &
+                            'COHESION and PHI are both zero')
+         if (allocated(error)) return
+      end do
+      call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'MATCH   '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, 1.0_dp], &
+                         'unknown property "MATCH" (valid: YOUNG, NUE, DENS, COHESION, PHI, PSI, HARD, TENSION)')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, &
+                         17.4_dp], 'TENSION must lie in [0, COHESION cot(PHI)) = [0, 17.3205')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DMohrCoulomb', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 0.0_dp, 0.0_dp, &
+                         -1.0_dp], 'TENSION must lie in [0, COHESION cot(PHI)) = [0, infinity), got -1')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DDruckerPrager', [names, 'TENSION '], [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, &
+                         0.0_dp, 5.0_dp], 'unknown property "TENSION"')
+      if (allocated(error)) return
+      call check_failure(error, 'MAT_3DDruckerPrager', [names, 'MATCH   '], &
+                         [1000.0_dp, 0.3_dp, 10.0_dp, 30.0_dp, 0.0_dp, 4.0_dp], &
+                         'MATCH must be 1 (outer cone), 2 (inner cone) or 3 (plane strain), got 4')
+   end subroutine test_frictional
 
    subroutine test_missing_young(error)
       type(error_t), allocatable, intent(out) :: error
