@@ -193,6 +193,7 @@ contains
       real(dp) :: residual_norm, reference, correction_norm, energy, current_time, time_correction
       type(acceptance_level_t) :: acceptance   !! of the contact line search
       logical :: waive_displacement, may_reuse, reusing
+      logical :: evaluated   !! the line search left the residual of the iterate (reusing only)
 
       current_time = time
       waive_displacement = .false.
@@ -201,6 +202,7 @@ contains
       if (present(reuse_factors)) may_reuse = reuse_factors .and. .not. driving(path)
       call start_increment(model, context, state, time, may_reuse, path)
       reusing = may_reuse
+      evaluated = .false.
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
       call reserve_iteration_log(report, min(max_iterations, initial_log_length))
@@ -211,8 +213,8 @@ contains
             report%failure = 'stopped by a signal'
             return
          end if
-         call evaluate_iterate(model, context, state, current_time, iteration, reusing, residual_norm, reference, &
-                               report, error)
+         call evaluate_iterate(model, context, state, current_time, iteration, reusing, evaluated, residual_norm, &
+                               reference, report, error)
          if (allocated(error) .or. allocated(report%failure)) return
          call record_iteration(context, state, label//trim(merge('  reused', '        ', reusing)), current_time, &
                                iteration, residual_norm, reference, energy, report)
@@ -238,39 +240,43 @@ contains
             context%n_iterations = context%n_iterations + 1
          end if
          reusing = may_reuse   ! tried again at the next iterate (evaluate_iterate)
+         evaluated = .false.
          if (state%has_contact .and. iteration > 0) then
             call acceptance%include(residual_norm)
             call contact_line_search(model, context, state, current_time, time_correction, acceptance%level, &
-                                     correction_norm, report%failure, error)
+                                     correction_norm, evaluated, residual_norm, reference, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
       end do
    end subroutine solve_increment
 
    !> The iterate's residual (evaluate_equilibrium) and, unless `reusing`, its tangent. With
-   !> `reusing` the residual is evaluated alone and the factors of the last tangent are kept
+   !> `reusing` the residual is evaluated alone (or, when `evaluated`, taken as the line search
+   !> left it: residual_norm and reference in) and the factors of the last tangent are kept
    !> for the correction when they still are its tangent (frix_factor_reuse) and the last
    !> correction reduced ||r|| by reuse_contraction at least; otherwise `reusing`
    !> turns false and the iterate is evaluated again with its tangent. Without `reusing`, an
    !> unsymmetric tangent of a symmetric system is announced to the solver and the diagonal
    !> kept (roundoff_floor).
-   subroutine evaluate_iterate(model, context, state, time, iteration, reusing, residual_norm, reference, &
-                               report, error)
+   subroutine evaluate_iterate(model, context, state, time, iteration, reusing, evaluated, residual_norm, &
+                               reference, report, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(in) :: time
       integer, intent(in) :: iteration
       logical, intent(inout) :: reusing
-      real(dp), intent(out) :: residual_norm, reference
+      logical, intent(in) :: evaluated
+      real(dp), intent(inout) :: residual_norm, reference
       type(newton_report_t), intent(inout) :: report
       type(error_t), allocatable, intent(out) :: error
       if (reusing) then
-         call evaluate_equilibrium(model, context, state, time, .false., residual_norm, reference, &
-                                   report%failure, error)
+         if (.not. evaluated) call evaluate_equilibrium(model, context, state, time, .false., residual_norm, &
+                                                        reference, report%failure, error)
          if (allocated(error) .or. allocated(report%failure)) return
          reusing = context%factors%matches(state, context%matrix%pattern_id)
-         if (reusing .and. iteration > 0) reusing = residual_norm <= reuse_contraction*report%residual_norms(iteration - 1)
+         if (reusing .and. iteration > 0) &
+            reusing = residual_norm <= reuse_contraction*report%residual_norms(iteration - 1)
          if (reusing) return
       end if
       call evaluate_equilibrium(model, context, state, time, .true., residual_norm, reference, &
@@ -663,9 +669,11 @@ contains
    !> steps short); after `max_trials` the trial with
    !> the smallest residual norm is kept. The correction norm reported is that of the
    !> accepted step. With path following the pseudo time moves with the step, t_old + s dt
-   !> (`time` in: after the full step; out: after the accepted one).
+   !> (`time` in: after the full step; out: after the accepted one). `evaluated`: the state is
+   !> the last trial evaluated (an accepted one), whose residual (context%residual, ...) and
+   !> norms (`residual_norm`, `reference`) are those of the next iterate.
    subroutine contact_line_search(model, context, state, time, time_correction, acceptance_level, &
-                                  correction_norm, failure, error)
+                                  correction_norm, evaluated, residual_norm, reference, failure, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -673,14 +681,17 @@ contains
       real(dp), intent(in) :: time_correction   !! dt of the full step (0 without path following)
       real(dp), intent(in) :: acceptance_level
       real(dp), intent(inout) :: correction_norm
+      logical, intent(out) :: evaluated
+      real(dp), intent(inout) :: residual_norm, reference
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
       integer, parameter :: max_trials = 8
       real(dp), parameter :: inset = 0.05_dp   !! minimum distance from the bracket's ends
-      real(dp) :: trial_norm, reference, fraction, next, best_norm, best_fraction
+      real(dp) :: trial_norm, trial_reference, fraction, next, best_norm, best_fraction
       real(dp) :: low, high, g_low, g_high, g
       logical :: bracketed, failed_high
       integer :: k, replaced_end
+      evaluated = .false.
       low = 0.0_dp
       g_low = dot_product(context%correction, context%residual)   ! g(0): the residual before the step
       high = 1.0_dp
@@ -692,7 +703,8 @@ contains
       best_norm = huge(1.0_dp)
       best_fraction = 1.0_dp
       do k = 1, max_trials
-         call evaluate_equilibrium(model, context, state, time, .false., trial_norm, reference, failure, error)
+         call evaluate_equilibrium(model, context, state, time, .false., trial_norm, trial_reference, failure, &
+                                   error)
          if (allocated(error)) return
          if (allocated(failure)) then
             deallocate (failure)   ! an inverted element: a shorter step
@@ -702,6 +714,9 @@ contains
          else
             if (trial_norm <= acceptance_level) then
                correction_norm = fraction*norm2(context%correction)
+               evaluated = .true.
+               residual_norm = trial_norm
+               reference = trial_reference
                return
             end if
             if (trial_norm < best_norm) then
