@@ -13,7 +13,9 @@
 !> alone (frix_newton_solver's residual_only: an inexact inner minimisation, Bertsekas,
 !> Constrained Optimization and Lagrange Multiplier Methods, 1982, 2.5); once it passes, the
 !> increment is solved to both criteria from there (`final`, one iteration mostly; none when the
-!> last solution met both anyway) and checked again. When the limit is reached with
+!> last solution met both anyway) and checked again. The re-solutions reuse the factorization
+!> of the last tangent while it serves (frix_newton_solver's reuse_factors, frix_factor_reuse:
+!> the multipliers change the contact forces, not the tangent); a grown penalty discards it. When the limit is reached with
 !> penetrations still beyond tolerance the increment is accepted with a warning (its
 !> equilibrium is converged; only the constraint is loose), as the progress lines say.
 module frix_augmentation
