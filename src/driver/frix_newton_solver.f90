@@ -122,9 +122,10 @@ module frix_newton_solver
    !> 0 would be the monotone rule): Zhang & Hager's eta, their recommended 0.85
    real(dp), parameter :: nonmonotone_weight = 0.85_dp
    real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
-   !> A correction with reused factors must bring ||r|| below this fraction of the last one for
-   !> the next to reuse them too (one decade: a new tangent is cheaper than a slow tail of
-   !> modified-Newton corrections)
+   !> A correction must bring ||r|| below this fraction of the last one for the next to reuse
+   !> the factors (one decade: a new tangent is cheaper than a slow tail of modified-Newton
+   !> corrections; 0.5 gives the same iterations on the augmented benchmark decks, 0.01 more
+   !> on S3: docs/contact.md, "Augmented Lagrangian")
    real(dp), parameter :: reuse_contraction = 0.1_dp
 
 contains
