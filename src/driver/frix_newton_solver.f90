@@ -13,8 +13,8 @@
 !> Such a re-solution may also reuse the factors (`reuse_factors`, frix_factor_reuse): a
 !> correction is then solved with the factorization of an earlier tangent of the increment,
 !> without assembling and factorizing a new one, while the contact statuses and faces are
-!> those it was assembled with and each such correction reduced ||r|| by at least
-!> reuse_contraction (modified Newton); otherwise the iteration assembles and factorizes as
+!> those it was assembled with and the last correction brought ||r|| below reuse_contraction
+!> times the one before (modified Newton); otherwise the iteration assembles and factorizes as
 !> usual. Only the corrections with a new factorization count as Newton iterations
 !> (n_iterations); the others are n_reused_corrections, their progress lines marked `reused`.
 !> With contact, an iterate is converged only when no slave node is held in a friction
