@@ -13,7 +13,9 @@
 !> alone (frix_newton_solver's residual_only: an inexact inner minimisation, Bertsekas,
 !> Constrained Optimization and Lagrange Multiplier Methods, 1982, 2.5); once it passes, the
 !> increment is solved to both criteria from there (`final`, one iteration mostly; none when the
-!> last solution met both anyway) and checked again. When the limit is reached with
+!> last solution met both anyway) and checked again. The re-solutions reuse the factorization
+!> of the last tangent while it serves (frix_newton_solver's reuse_factors, frix_factor_reuse:
+!> the multipliers change the contact forces, not the tangent); a grown penalty discards it. When the limit is reached with
 !> penetrations still beyond tolerance the increment is accepted with a warning (its
 !> equilibrium is converged; only the constraint is loose), as the progress lines say.
 module frix_augmentation
@@ -113,6 +115,7 @@ contains
          end if
          k = k + 1
          call grow_penalties(model, state%contact, grown)
+         if (grown) call context%factors%discard()   ! the tangent changed with the penalty
          change = augment_multipliers(model, state%contact)
          context%n_augmentations = context%n_augmentations + 1
          call print_augmentation(context, model, k, check, change, grown)
@@ -127,15 +130,19 @@ contains
             violation_text(model, check)//'; the increment is accepted'
    contains
       !> The increment solved again from where the last solution ended (path following: the
-      !> load factor found is the start), its iterations counted.
+      !> load factor found is the start), with the factors of the last tangent while they
+      !> serve (frix_newton_solver's reuse_factors); its iterations counted, those with
+      !> reused factors not.
       subroutine solve_again(solve_label, residual_only)
          character(len=*), intent(in) :: solve_label
          logical, intent(in) :: residual_only
          real(dp) :: solve_time
+         integer :: reused
          solve_time = state%time
+         reused = context%n_reused_corrections
          call solve_increment(model, context, state, solve_time, max_iterations, solve_label, report, error, &
-                              path, residual_only)
-         iterations = iterations + report%iterations
+                              path, residual_only, reuse_factors=.true.)
+         iterations = iterations + report%iterations - (context%n_reused_corrections - reused)
       end subroutine solve_again
    end subroutine augmented_attempt
 

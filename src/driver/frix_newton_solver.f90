@@ -10,6 +10,13 @@
 !> frix_augmentation) is converged on the residual criterion alone, after one correction at
 !> least: its multipliers are updated next anyway, and the solution the increment ends with
 !> meets both criteria.
+!> Such a re-solution may also reuse the factors (`reuse_factors`, frix_factor_reuse): a
+!> correction is then solved with the factorization of an earlier tangent of the increment,
+!> without assembling and factorizing a new one, while the contact statuses and faces are
+!> those it was assembled with and the last correction brought ||r|| below reuse_contraction
+!> times the one before (modified Newton); otherwise the iteration assembles and factorizes as
+!> usual. Only the corrections with a new factorization count as Newton iterations
+!> (n_iterations); the others are n_reused_corrections, their progress lines marked `reused`.
 !> With contact, an iterate is converged only when no slave node is held in a friction
 !> branch other than the law's own (slip reversal, frix_contact_assembly). The energy norm
 !> printed per iteration is |du . r| of the correction just made.
@@ -37,6 +44,7 @@ module frix_newton_solver
    use frix_kinematic_coupling, only: add_coupling_equations
    use frix_external_loads, only: assemble_external, prescribed_displacements, has_follower_loads
    use frix_newton_report, only: newton_report_t, reserve_iteration_log, print_progress
+   use frix_factor_reuse, only: factor_reuse_t
    use frix_equation_checks, only: check_finite, check_finite_tangent, describe_singularity, equation_label
    use frix_contact_assembly, only: search_contact, assemble_contact, &
                                     contact_counts, reset_friction_branches, &
@@ -100,6 +108,9 @@ module frix_newton_solver
       integer :: n_releases = 0                !! converged iterates where held nodes were released
       integer :: n_continuations = 0           !! failed increments retried by friction continuation
       integer :: n_augmentations = 0           !! multiplier updates of augmented contact (frix_augmentation)
+      !> corrections solved with the factors of an earlier tangent (solve_increment's reuse_factors)
+      integer :: n_reused_corrections = 0
+      type(factor_reuse_t) :: factors          !! the contact state of the last factorization
    end type newton_context_t
 
    real(dp), parameter :: zero_residual_fraction = 1.0e-4_dp
@@ -111,6 +122,11 @@ module frix_newton_solver
    !> 0 would be the monotone rule): Zhang & Hager's eta, their recommended 0.85
    real(dp), parameter :: nonmonotone_weight = 0.85_dp
    real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
+   !> A correction must bring ||r|| below this fraction of the last one for the next to reuse
+   !> the factors (one decade: a new tangent is cheaper than a slow tail of modified-Newton
+   !> corrections; 0.5 gives the same iterations on the augmented benchmark decks, 0.01 more
+   !> on S3: docs/contact.md, "Augmented Lagrangian")
+   real(dp), parameter :: reuse_contraction = 0.1_dp
 
 contains
 
@@ -160,8 +176,10 @@ contains
    !> only for failures that a smaller increment cannot cure (a singular matrix at the first
    !> iteration, a solver failure); non-convergence is reported in `report` instead.
    !> `residual_only`: converged on the residual criterion alone (module head).
+   !> `reuse_factors`: the corrections may be solved with the factors of an earlier tangent of
+   !> the increment (module head; not with a driven displacement).
    subroutine solve_increment(model, context, state, time, max_iterations, label, report, error, path, &
-                              residual_only)
+                              residual_only, reuse_factors)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -171,16 +189,21 @@ contains
       type(newton_report_t), intent(out) :: report
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
-      logical, intent(in), optional :: residual_only
+      logical, intent(in), optional :: residual_only, reuse_factors
       integer :: iteration, outcome
       real(dp) :: residual_norm, reference, correction_norm, energy, current_time, time_correction
       type(acceptance_level_t) :: acceptance   !! of the contact line search
-      logical :: waive_displacement
+      logical :: waive_displacement, may_reuse, reusing
+      logical :: evaluated   !! the line search left the residual of the iterate (reusing only)
 
       current_time = time
       waive_displacement = .false.
       if (present(residual_only)) waive_displacement = residual_only
-      call start_increment(model, context, state, time, path)
+      may_reuse = .false.
+      if (present(reuse_factors)) may_reuse = reuse_factors .and. .not. driving(path)
+      call start_increment(model, context, state, time, may_reuse, path)
+      reusing = may_reuse
+      evaluated = .false.
       correction_norm = huge(1.0_dp)
       energy = 0.0_dp
       call reserve_iteration_log(report, min(max_iterations, initial_log_length))
@@ -191,15 +214,11 @@ contains
             report%failure = 'stopped by a signal'
             return
          end if
-         call evaluate_equilibrium(model, context, state, current_time, .true., residual_norm, reference, &
-                                   report%failure, error, predictor=iteration == 0)
+         call evaluate_iterate(model, context, state, current_time, iteration, reusing, evaluated, residual_norm, &
+                               reference, report, error)
          if (allocated(error) .or. allocated(report%failure)) return
-         if (context%symmetric .and. state%has_contact) then
-            if (state%contact%clamped_unsymmetric) call context%solver%expect_unsymmetric()
-         end if
-         call context%matrix%get_diagonal(context%diagonal)
-         call record_iteration(context, state, label, current_time, iteration, residual_norm, reference, &
-                               energy, report)
+         call record_iteration(context, state, label//trim(merge('  reused', '        ', reusing)), current_time, &
+                               iteration, residual_norm, reference, energy, report)
          call test_convergence(model, context, state, iteration, max_iterations, residual_norm, reference, &
                                correction_norm, waive_displacement, report, outcome, path)
          select case (outcome)
@@ -214,17 +233,61 @@ contains
             cycle
          end select
          call apply_correction(model, context, state, iteration, current_time, time_correction, energy, &
-                               correction_norm, report, error, path)
+                               correction_norm, reusing, report, error, path)
          if (allocated(error) .or. allocated(report%failure)) return
-         context%n_iterations = context%n_iterations + 1
+         if (reusing) then
+            context%n_reused_corrections = context%n_reused_corrections + 1
+         else
+            context%n_iterations = context%n_iterations + 1
+         end if
+         reusing = may_reuse   ! tried again at the next iterate (evaluate_iterate)
+         evaluated = .false.
          if (state%has_contact .and. iteration > 0) then
             call acceptance%include(residual_norm)
             call contact_line_search(model, context, state, current_time, time_correction, acceptance%level, &
-                                     correction_norm, report%failure, error)
+                                     correction_norm, evaluated, residual_norm, reference, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
       end do
    end subroutine solve_increment
+
+   !> The iterate's residual (evaluate_equilibrium) and, unless `reusing`, its tangent. With
+   !> `reusing` the residual is evaluated alone (or, when `evaluated`, taken as the line search
+   !> left it: residual_norm and reference in) and the factors of the last tangent are kept
+   !> for the correction when they still are its tangent (frix_factor_reuse) and the last
+   !> correction reduced ||r|| by reuse_contraction at least; otherwise `reusing`
+   !> turns false and the iterate is evaluated again with its tangent. Without `reusing`, an
+   !> unsymmetric tangent of a symmetric system is announced to the solver and the diagonal
+   !> kept (roundoff_floor).
+   subroutine evaluate_iterate(model, context, state, time, iteration, reusing, evaluated, residual_norm, &
+                               reference, report, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      integer, intent(in) :: iteration
+      logical, intent(inout) :: reusing
+      logical, intent(in) :: evaluated
+      real(dp), intent(inout) :: residual_norm, reference
+      type(newton_report_t), intent(inout) :: report
+      type(error_t), allocatable, intent(out) :: error
+      if (reusing) then
+         if (.not. evaluated) call evaluate_equilibrium(model, context, state, time, .false., residual_norm, &
+                                                        reference, report%failure, error)
+         if (allocated(error) .or. allocated(report%failure)) return
+         reusing = context%factors%matches(state, context%matrix%pattern_id)
+         if (reusing .and. iteration > 0) &
+            reusing = residual_norm <= reuse_contraction*report%residual_norms(iteration - 1)
+         if (reusing) return
+      end if
+      call evaluate_equilibrium(model, context, state, time, .true., residual_norm, reference, &
+                                report%failure, error, predictor=iteration == 0)
+      if (allocated(error) .or. allocated(report%failure)) return
+      if (context%symmetric .and. state%has_contact) then
+         if (state%contact%clamped_unsymmetric) call context%solver%expect_unsymmetric()
+      end if
+      call context%matrix%get_diagonal(context%diagonal)
+   end subroutine evaluate_iterate
 
    !> The level after a Newton step that starts from |r| = residual_norm (acceptance_level_t).
    pure subroutine include_step(acceptance, residual_norm)
@@ -238,15 +301,21 @@ contains
 
    !> Start an increment at pseudo time `time`: the solver's and the contact branches' state
    !> reset, the prescribed displacements of `time` (path following: of the step's end) set.
-   subroutine start_increment(model, context, state, time, path)
+   !> With `reuse_factors` the solver keeps the factors of the last solution (and the choice
+   !> between CHOLMOD and UMFPACK that made them); without, they are forgotten.
+   subroutine start_increment(model, context, state, time, reuse_factors, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(in) :: time
+      logical, intent(in) :: reuse_factors
       type(path_constraint_t), intent(in), optional :: path
       state%time = time
       if (allocated(context%step_window)) deallocate (context%step_window)
-      call context%solver%begin_increment()
+      if (.not. reuse_factors) then
+         call context%solver%begin_increment()
+         call context%factors%discard()
+      end if
       if (state%has_contact) call reset_friction_branches(state%contact)
       if (present(path)) then
          context%step_window = [path%step_start, path%step_end]
@@ -367,15 +436,17 @@ contains
 
    !> One Newton correction: the constrained system solved, the load factor's correction of
    !> path following (`time_correction`), every value checked finite, the iterate and `time`
-   !> updated; `energy` = |du . r| and `correction_norm` = |du|.
+   !> updated; `energy` = |du . r| and `correction_norm` = |du|. `reusing`: solved with the
+   !> factors of an earlier tangent (evaluate_iterate), else the tangent is factorized.
    subroutine apply_correction(model, context, state, iteration, time, time_correction, energy, correction_norm, &
-                               report, error, path)
+                               reusing, report, error, path)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       integer, intent(in) :: iteration
       real(dp), intent(inout) :: time
       real(dp), intent(out) :: time_correction, energy, correction_norm
+      logical, intent(in) :: reusing
       type(newton_report_t), intent(inout) :: report
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
@@ -383,11 +454,20 @@ contains
       real(dp) :: diagonal_scale
       energy = 0.0_dp
       correction_norm = 0.0_dp
-      ! the value put on the diagonal of constrained equations: the mean |K_ii|
-      diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
-      if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
-      call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
-      call factorize_and_solve(model, context, inner_error)
+      if (reusing) then
+         call solve_factorized(context, context%residual, context%correction, inner_error)
+      else
+         ! the value put on the diagonal of constrained equations: the mean |K_ii|
+         diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
+         if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
+         call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
+         call factorize_and_solve(model, context, inner_error)
+         if (allocated(inner_error)) then
+            call context%factors%discard()
+         else
+            call context%factors%record(state, context%matrix%pattern_id)
+         end if
+      end if
       if (allocated(inner_error)) then
          if (iteration == 0) then
             call move_alloc(inner_error, error)
@@ -590,9 +670,11 @@ contains
    !> steps short); after `max_trials` the trial with
    !> the smallest residual norm is kept. The correction norm reported is that of the
    !> accepted step. With path following the pseudo time moves with the step, t_old + s dt
-   !> (`time` in: after the full step; out: after the accepted one).
+   !> (`time` in: after the full step; out: after the accepted one). `evaluated`: the state is
+   !> the last trial evaluated (an accepted one), whose residual (context%residual, ...) and
+   !> norms (`residual_norm`, `reference`) are those of the next iterate.
    subroutine contact_line_search(model, context, state, time, time_correction, acceptance_level, &
-                                  correction_norm, failure, error)
+                                  correction_norm, evaluated, residual_norm, reference, failure, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -600,14 +682,17 @@ contains
       real(dp), intent(in) :: time_correction   !! dt of the full step (0 without path following)
       real(dp), intent(in) :: acceptance_level
       real(dp), intent(inout) :: correction_norm
+      logical, intent(out) :: evaluated
+      real(dp), intent(inout) :: residual_norm, reference
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
       integer, parameter :: max_trials = 8
       real(dp), parameter :: inset = 0.05_dp   !! minimum distance from the bracket's ends
-      real(dp) :: trial_norm, reference, fraction, next, best_norm, best_fraction
+      real(dp) :: trial_norm, trial_reference, fraction, next, best_norm, best_fraction
       real(dp) :: low, high, g_low, g_high, g
       logical :: bracketed, failed_high
       integer :: k, replaced_end
+      evaluated = .false.
       low = 0.0_dp
       g_low = dot_product(context%correction, context%residual)   ! g(0): the residual before the step
       high = 1.0_dp
@@ -619,7 +704,8 @@ contains
       best_norm = huge(1.0_dp)
       best_fraction = 1.0_dp
       do k = 1, max_trials
-         call evaluate_equilibrium(model, context, state, time, .false., trial_norm, reference, failure, error)
+         call evaluate_equilibrium(model, context, state, time, .false., trial_norm, trial_reference, failure, &
+                                   error)
          if (allocated(error)) return
          if (allocated(failure)) then
             deallocate (failure)   ! an inverted element: a shorter step
@@ -629,6 +715,9 @@ contains
          else
             if (trial_norm <= acceptance_level) then
                correction_norm = fraction*norm2(context%correction)
+               evaluated = .true.
+               residual_norm = trial_norm
+               reference = trial_reference
                return
             end if
             if (trial_norm < best_norm) then
