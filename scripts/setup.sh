@@ -11,7 +11,8 @@ build_dir=${1:-$root/build}
 build_type=${2:-${FRIX_BUILD_TYPE:-Release}}
 
 packages=(gfortran gcc cmake make libsuitesparse-dev libmetis-dev libhdf5-dev gmsh numdiff
-          libopenblas0-pthread python3-numpy python3-matplotlib python3-meshio python3-h5py)
+          libopenblas0-pthread python3-numpy python3-matplotlib python3-meshio python3-h5py
+          time)   # GNU time: the bench scripts (bench/) read CPU times from it
 # The Sanitize build's runtimes (libasan8, libubsan1) come with gcc: gfortran -> gcc-12 ->
 # libgcc-12-dev, which depends on both (Debian 12).
 
