@@ -283,7 +283,7 @@ SET bolt  SOLID HEX8 EAS {eas} MAT 2
 SET sym_x    DOF 1 0 0 VAL 0.0 0.0 0.0              // web mid-plane
 SET sym_y    DOF 0 1 0 VAL 0.0 0.0 0.0              // midway between the bolt rows
 {supports}--------------------------------------------------CONTACT CONDITIONS
-PAIR 1 SLAVE flange_bottom MASTER RIGID_PLANE POINT 0 0 0 NORMAL 0 0 1 EPSN {epsn:.4e} EPST {epst:.4e} MU 0.1 GAPTOL 1.0e-4
+{pair_line}
 ---------------------------------------------------------------STEPS
 {steps}-------------------------------------------------------------RESULTS
 {results}
@@ -302,7 +302,12 @@ MESHES = {"coarse": ("s2_coarse.msh", 1), "fine": ("s2_fine.msh", 2)}
 U_END, N_INC = 0.002, 20
 
 
+PAIR_LINE = ("PAIR 1 SLAVE flange_bottom MASTER RIGID_PLANE POINT 0 0 0 NORMAL 0 0 1 {penalties}"
+             "MU 0.1 GAPTOL 1.0e-4{method}")
+PENALTIES = "EPSN {epsn:.4e} EPST {epst:.4e} "
+
 PLAIN = dict(
+    pair_line=PAIR_LINE.format(penalties=PENALTIES, method=""),
     preload_text="",
     curves="CURVE 1 POINTS 0.0 0.0  1.0 1.0\n",
     supports="SET bolt_end DOF 1 1 1 VAL 0.0 0.0 0.0              "
@@ -316,6 +321,7 @@ PLAIN = dict(
 # F_p,C = 0.7 f_ub A_s = 171.5 kN of EN 1993-1-8 3.6.1 (the run reports the force reached).
 PRELOAD_SHORTENING, PRELOAD_INCREMENTS = 2.05e-4, 5
 PRELOADED = dict(
+    pair_line=PAIR_LINE.format(penalties=PENALTIES, method=""),
     preload_text="\n Bolt preload by the turn of the nut: step 1 moves the bolt's end by "
                  "{shortening:g} m\n"
                  " (u_z, in {n_pre} increments) with the web held, towards the EN 1993-1-8 3.6.1\n"
@@ -329,6 +335,17 @@ PRELOADED = dict(
              "// pulled off the end plate\n",
     steps="STEP 1 NUMSTEP {n_pre} CONTROL Displacement      // preload\n"
           "STEP 2 NUMSTEP {n_inc} CONTROL Displacement\n")
+
+
+# The penalty study's two answers to the seed's spread: the augmented Lagrangian (normal and
+# tangential) at the softest pair, and the automatic penalties (docs/contact.md).
+AUGMENTED = dict(PLAIN, pair_line=PAIR_LINE.format(penalties=PENALTIES, method=" METHOD Augmented TMETHOD Augmented"),
+                 preload_text="\n Contact by the augmented Lagrangian (METHOD Augmented, TMETHOD Augmented) at these "
+                              "penalties:\n the penetration and the stick slip end below their tolerances whatever the "
+                              "penalty.")
+AUTOMATIC = dict(PLAIN, pair_line=PAIR_LINE.format(penalties="", method=""),
+                 preload_text="\n No EPSN or EPST on the PAIR line: frix's automatic penalties are used instead of "
+                              "the pair above\n (docs/contact.md, \"Automatic penalties\").")
 
 
 def deck(mesh, counts, eas, pair, title, results="VTK Yes  LISTING Yes  HDF5 Yes", variant=PLAIN):
@@ -356,6 +373,11 @@ def write_decks(counts):
     for pair in PENALTY_PAIRS[1:] + SOFT_PAIRS:
         write("s2_eas9_n%g_t%g" % pair, deck(coarse, counts[coarse], 9, pair,
                                              "Coarse mesh, HEX8 EAS 9, penalties (%g, %g)." % pair))
+    softest = SOFT_PAIRS[-1]
+    write("s2_eas9_augmented", deck(coarse, counts[coarse], 9, softest, "Coarse mesh, HEX8 EAS 9, "
+                                    "augmented Lagrangian at the penalties (%g, %g)." % softest, variant=AUGMENTED))
+    write("s2_eas9_autopenalty", deck(coarse, counts[coarse], 9, seed, "Coarse mesh, HEX8 EAS 9, "
+                                      "automatic penalties.", variant=AUTOMATIC))
 
 
 def write(name, text):
