@@ -187,6 +187,8 @@ contains
          if (pair%slave_surface == 0) then
             if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'unknown surface')
             ok = .false.
+         else
+            call reader%require_hex8_faces(line, position - 1, model%mesh, pair%slave_surface, 'contact', ok)
          end if
       end if
       call reader%expect_keyword(line, position, 'MASTER', ok)
@@ -200,6 +202,8 @@ contains
          else if (pair%master_surface == pair%slave_surface) then
             call reader%report(line, position - 1, 'a surface cannot be in contact with itself')
             ok = .false.
+         else
+            call reader%require_hex8_faces(line, position - 1, model%mesh, pair%master_surface, 'contact', ok)
          end if
       end if
    end subroutine read_pair_surfaces

@@ -49,7 +49,7 @@ contains
                new_unittest('duplicate_node', test_duplicate_node), &
                new_unittest('bad_count_v22', test_count_v22), &
                new_unittest('bad_count_v41', test_count_v41), &
-               new_unittest('tetrahedron_in_volume', test_tetrahedron), &
+               new_unittest('tetrahedron_in_volume_read', test_tetrahedron), &
                new_unittest('second_order_in_volume', test_second_order), &
                new_unittest('quad_matching_no_face', test_unmatched_quad), &
                new_unittest('quad_on_interior_face', test_interior_face), &
@@ -349,26 +349,34 @@ contains
       call expect_error('error_count_v41.msh', '80: bad counts: the node blocks hold more than the 12 nodes', error)
    end subroutine test_count_v41
 
+   !> Two hexahedra and a tetrahedron (type 4) in one physical volume: read, each with its cell.
    subroutine test_tetrahedron(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('error_tetrahedron.msh', '39: only 8-node hexahedra are supported: element 11 has type 4', error)
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: read_error
+      call read_gmsh(data_path('error_tetrahedron.msh'), mesh, read_error)
+      call check(error, .not. allocated(read_error), 'a tetrahedron is read')
+      if (allocated(error)) return
+      call check(error, mesh%n_elements == 3 .and. mesh%cell_name(1) == 'HEX8' .and. mesh%cell_name(3) == 'TET4' &
+                 .and. all(mesh%element_nodes(3) == [1, 2, 3, 5]), 'the tetrahedron''s cell and nodes')
    end subroutine test_tetrahedron
 
    !> gmsh -order 2 gives 27-node hexahedra (type 12) in the volume and 9-node quadrilaterals
    !> on the surfaces: the volume's error comes first.
    subroutine test_second_order(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('block_order2_v41.msh', '178: only 8-node hexahedra are supported: element 9 has type 12', error)
+      call expect_error('block_order2_v41.msh', '178: only 8-node hexahedra (type 5) and 4-node '// &
+                        'tetrahedra (type 4) are supported: element 9 has type 12', error)
    end subroutine test_second_order
 
    subroutine test_unmatched_quad(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('error_unmatched_quad.msh', '32: quadrilateral 4 matches no face of a hexahedron', error)
+      call expect_error('error_unmatched_quad.msh', '32: surface element 4 matches no face of a volume element', error)
    end subroutine test_unmatched_quad
 
    subroutine test_interior_face(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('error_interior_face.msh', '32: quadrilateral 4 lies on a face shared by two hexahedra', error)
+      call expect_error('error_interior_face.msh', '32: surface element 4 lies on a face shared by two volume elements', error)
    end subroutine test_interior_face
 
    ! ---- malformed input (files written by the tests) ---------------------------------------
