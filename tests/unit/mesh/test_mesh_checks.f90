@@ -214,6 +214,7 @@ contains
       if (allocated(error)) return
       ! a third cube sharing the face x = 2 of the first block and x = 5 of the copy joins them
       mesh%connectivity = reshape([mesh%connectivity, [2, 13, 15, 4, 6, 17, 20, 7]], [8, 5])
+      call mesh%set_cells([mesh%element_cell, mesh%element_cell(1)])   ! a HEX8 as the others
       mesh%n_elements = 5
       call connected_components(mesh, component, n_components)
       call check(error, n_components == 1, 'one component after joining, got '//to_string(n_components))
