@@ -189,7 +189,7 @@ contains
       real(dp), parameter :: gradient(3, 3) = 1.0e-3_dp*reshape([1.0_dp, 0.2_dp, -0.7_dp, 0.4_dp, -0.5_dp, 0.1_dp, &
                                                                  -0.3_dp, 0.6_dp, 0.8_dp], [3, 3])
       real(dp) :: u(3, 4), fint(12), stress(6, 1), strain(6, 1), state_old(0, 1), state_new(0, 1), alpha(0)
-      real(dp) :: expected_strain(6), expected_stress(6)
+      real(dp) :: expected_strain(6), expected_stress(6), hooke(6, 6)
       type(cell_solid_t) :: element
       integer :: a
       do a = 1, 4
@@ -197,7 +197,8 @@ contains
       end do
       expected_strain = [gradient(1, 1), gradient(2, 2), gradient(3, 3), gradient(1, 2) + gradient(2, 1), &
                          gradient(1, 3) + gradient(3, 1), gradient(2, 3) + gradient(3, 2)]
-      expected_stress = matmul(hooke_tangent(young, poisson), expected_strain)
+      hooke = hooke_tangent(young, poisson)
+      expected_stress = matmul(hooke, expected_strain)
       element = tet4(kinematics_linear)
       call element%evaluate(new_linear_elastic(young, poisson, 0.0_dp), tet_coords, u, alpha, state_old, state_new, &
                             fint, stress=stress, strain=strain, error=error)
