@@ -213,7 +213,7 @@ contains
       call find_cell(cell, found, name='PYRAMID13')
       call check(error, .not. found .and. .not. allocated(cell), 'an unknown name is found')
       if (allocated(error)) return
-      call check(error, cell_names() == 'HEX8 QUAD4 TET4 TRI3', 'cell names: '//cell_names())
+      call check(error, cell_names() == 'HEX8 QUAD4 TET4 TRI3 TET10', 'cell names: '//cell_names())
    end subroutine test_registry
 
    pure function cross(a, b) result(c)
