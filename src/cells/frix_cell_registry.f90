@@ -10,7 +10,10 @@ module frix_cell_registry
    implicit none
    private
 
-   public :: cell_table, find_cell, cell_names
+   public :: cell_table, find_cell, cell_names, hex8_cell_index
+
+   !> The line of HEX8 in cell_table(): a mesh built without cell types is HEX8 (frix_mesh).
+   integer, parameter :: hex8_cell_index = 1
 
    !> One entry of the table (an allocatable component holds the concrete cell).
    type, public :: cell_entry_t

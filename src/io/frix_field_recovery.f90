@@ -18,7 +18,7 @@ module frix_field_recovery
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
-   use frix_cell_registry, only: cell_entry_t, cell_table
+   use frix_cell_registry, only: cell_entry_t, cell_table, hex8_cell_index
    implicit none
    private
 
@@ -88,7 +88,7 @@ contains
       end do
       allocate (element_values(size(gp, 1), size(connectivity, 1), size(gp, 3)), source=0.0_dp)
       do e = 1, size(gp, 3)
-         k = 1   ! HEX8, the first cell of the table, without element_cell
+         k = hex8_cell_index   ! without element_cell
          if (present(element_cell)) k = element_cell(e)
          n_nodes = size(matrices(k)%matrix, 1)
          n_points = size(matrices(k)%matrix, 2)

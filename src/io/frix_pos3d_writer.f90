@@ -92,9 +92,8 @@ contains
          return
       end if
       if (.not. mesh%has_only_hex8()) then
-         call fatal_error(error, 'POS3D output: frix writes BRICK8 elements only, the mesh has '// &
-                          mesh%cell_name(findloc(mesh%cell_indices() /= 1, .true., dim=1))// &
-                          ' elements (write VTK or HDF5 instead)')
+         call fatal_error(error, 'POS3D output: frix writes BRICK8 (HEX8) elements only, the mesh has others '// &
+                          '(write VTK or HDF5 instead)')
          return
       end if
       if (size(mesh%coords, 1) /= 3 .or. size(mesh%coords, 2) /= mesh%n_nodes .or. &

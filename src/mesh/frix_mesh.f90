@@ -12,7 +12,7 @@ module frix_mesh
    use frix_kinds, only: dp
    use frix_hex8_cell, only: hex8_face_nodes
    use frix_reference_cell, only: reference_cell_t
-   use frix_cell_registry, only: cell_entry_t, cell_table
+   use frix_cell_registry, only: cell_entry_t, cell_table, hex8_cell_index
    implicit none
    private
 
@@ -91,7 +91,7 @@ contains
    pure integer function cell_of(self, e)
       class(mesh_t), intent(in) :: self
       integer, intent(in) :: e
-      cell_of = 1   ! HEX8, the first line of cell_table()
+      cell_of = hex8_cell_index
       if (allocated(self%element_cell)) cell_of = self%element_cell(e)
    end function cell_of
 
@@ -135,7 +135,7 @@ contains
    pure logical function has_only_hex8(self)
       class(mesh_t), intent(in) :: self
       has_only_hex8 = .true.
-      if (allocated(self%element_cell)) has_only_hex8 = all(self%element_cell(1:self%n_elements) == 1)
+      if (allocated(self%element_cell)) has_only_hex8 = all(self%element_cell(1:self%n_elements) == hex8_cell_index)
    end function has_only_hex8
 
    !> The first element on surface `surface` (index into `surfaces`) that is not a HEX8, 0 if
@@ -146,7 +146,7 @@ contains
       integer :: k
       element = 0
       do k = 1, size(self%surfaces(surface)%elements)
-         if (self%cell_of(self%surfaces(surface)%elements(k)) /= 1) then
+         if (self%cell_of(self%surfaces(surface)%elements(k)) /= hex8_cell_index) then
             element = self%surfaces(surface)%elements(k)
             return
          end if

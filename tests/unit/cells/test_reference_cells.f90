@@ -10,7 +10,7 @@ module test_reference_cells
    use frix_strings, only: to_string
    use frix_testing, only: unittest_t, new_unittest, check
    use frix_reference_cell, only: reference_cell_t
-   use frix_cell_registry, only: cell_table, cell_entry_t, find_cell, cell_names
+   use frix_cell_registry, only: cell_table, cell_entry_t, find_cell, cell_names, hex8_cell_index
    implicit none
    private
 
@@ -214,6 +214,8 @@ contains
       call check(error, .not. found .and. .not. allocated(cell), 'an unknown name is found')
       if (allocated(error)) return
       call check(error, cell_names() == 'HEX8 QUAD4 TET4 TRI3 TET10', 'cell names: '//cell_names())
+      if (allocated(error)) return
+      call check(error, table(hex8_cell_index)%cell%name == 'HEX8', 'hex8_cell_index is not HEX8''s line')
    end subroutine test_registry
 
    pure function cross(a, b) result(c)
