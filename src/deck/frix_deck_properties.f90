@@ -388,15 +388,14 @@ contains
             end if
             do k = 1, size(model%mesh%element_sets(set)%elements)
                element = model%mesh%element_sets(set)%elements(k)
-               associate (cell_name => model%mesh%cells(model%mesh%cell_of(element))%cell%name)
-                  if (cell_name /= trim(shape%cell)) then
-                     call reader%report(line, 4, 'element '//to_string(model%mesh%element_ids(element))// &
-                                        ' of set "'//name//'" is a '//cell_name//', element shape '// &
-                                        trim(shape%keyword)//' is for '//trim(shape%cell)//' cells')
-                     reader%property_failed = .true.
-                     exit
-                  end if
-               end associate
+               if (model%mesh%cell_name(element) /= trim(shape%cell)) then
+                  ! a formulation is written for one cell type (the element registry's entry)
+                  call reader%report(line, 4, 'element '//to_string(model%mesh%element_ids(element))// &
+                                     ' of set "'//name//'" is a '//model%mesh%cell_name(element)//', element shape '// &
+                                     trim(shape%keyword)//' is for '//trim(shape%cell)//' cells')
+                  reader%property_failed = .true.
+                  exit
+               end if
                if (reader%element_property(element) /= 0 .and. reader%element_property(element) /= property) then
                   call reader%report(line, 2, 'element '//to_string(model%mesh%element_ids(element))// &
                                      ' already has a different property (line '// &
