@@ -153,7 +153,6 @@ contains
          end do
       end if
       if (present(strain)) strain(:, 1:n_points) = total
-      if (.false.) alpha = alpha   ! no enhanced parameters
    end subroutine cell_solid_evaluate
 
    !> dN_a/dX at every point and dV0 = detJ w; an error names the first point with detJ <= 0.
