@@ -257,6 +257,7 @@ add_test(NAME hdf5_reader_during_run
 set_tests_properties(hdf5_reader_during_run PROPERTIES LABELS regression TIMEOUT ${scaled_60})
 # The Abaqus/CalculiX .inp mesh reader.
 include(${CMAKE_CURRENT_SOURCE_DIR}/inp/inp.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/tet4/tet4.cmake)
 # The pipe-in-soil tutorial's deck (docs/tutorial-pipe-in-soil.md) on its committed gmsh mesh:
 # it converges, and the pull on the pipe's ends balances the soil's supports.
 set(pipe_in_soil ${PROJECT_SOURCE_DIR}/inputs/examples/pipe_in_soil)

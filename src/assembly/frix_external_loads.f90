@@ -4,7 +4,6 @@
 module frix_external_loads
    use frix_kinds, only: dp
    use frix_model, only: model_t, curve_factor
-   use frix_mesh, only: hex8_face_nodes
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_surface_load, only: pressure_load
    implicit none
@@ -29,7 +28,8 @@ contains
       real(dp), intent(in), optional :: step_window(2)
       integer :: i, k, a, node, e, face, equation
       real(dp) :: factor, coords(3, 4), displacement(3, 4), force(12), stiffness(12, 12)
-      real(dp) :: weights(8), element_coords(3, 8)
+      real(dp) :: weights(8)
+      real(dp), allocatable :: element_coords(:, :)
       integer :: face_nodes(4)
 
       fext = 0.0_dp
@@ -54,7 +54,7 @@ contains
                do k = 1, size(surface%elements)
                   e = surface%elements(k)
                   face = surface%faces(k)
-                  face_nodes = model%mesh%connectivity(hex8_face_nodes(:, face), e)
+                  face_nodes = model%mesh%face_nodes(e, face)
                   do a = 1, 4
                      node = face_nodes(a)
                      coords(:, a) = model%mesh%coords(:, node)
@@ -83,9 +83,9 @@ contains
                   associate (block => model%blocks(model%mesh%element_block(e)))
                      associate (element => block%element%formulation, &
                                 density => model%materials(block%material)%law%density)
-                        element_coords = model%mesh%coords(:, model%mesh%connectivity(:, e))
+                        element_coords = model%mesh%coords(:, model%mesh%element_nodes(e))
                         call element%volume_weights(element_coords, weights)
-                        do a = 1, 8
+                        do a = 1, model%mesh%node_count(e)
                            node = model%mesh%connectivity(a, e)
                            fext(3*node - 2:3*node) = fext(3*node - 2:3*node) + &
                                                      density*factor*weights(a)*load%gravity
@@ -135,7 +135,7 @@ contains
          end do
       end if
       allocate (in_element(model%mesh%n_nodes), source=.false.)
-      in_element(pack(model%mesh%connectivity, .true.)) = .true.
+      in_element(pack(model%mesh%connectivity, model%mesh%connectivity > 0)) = .true.
       if (allocated(model%couplings)) then
          in_element(model%couplings%reference_node) = .true.
          in_element(model%couplings%rotation_node) = .true.

@@ -4,10 +4,16 @@ module frix_cell_registry
    use frix_reference_cell, only: reference_cell_t
    use frix_hex8_cell, only: new_hex8_cell
    use frix_quad4_cell, only: new_quad4_cell
+   use frix_tet4_cell, only: new_tet4_cell
+   use frix_tri3_cell, only: new_tri3_cell
+   use frix_tet10_cell, only: new_tet10_cell
    implicit none
    private
 
-   public :: cell_table, find_cell, cell_names
+   public :: cell_table, find_cell, cell_names, hex8_cell_index
+
+   !> The line of HEX8 in cell_table(): a mesh built without cell types is HEX8 (frix_mesh).
+   integer, parameter :: hex8_cell_index = 1
 
    !> One entry of the table (an allocatable component holds the concrete cell).
    type, public :: cell_entry_t
@@ -19,9 +25,12 @@ contains
    !> Every known cell, one line each.
    function cell_table() result(table)
       type(cell_entry_t), allocatable :: table(:)
-      allocate (table(2))
+      allocate (table(5))
       allocate (table(1)%cell, source=new_hex8_cell())
       allocate (table(2)%cell, source=new_quad4_cell())
+      allocate (table(3)%cell, source=new_tet4_cell())
+      allocate (table(4)%cell, source=new_tri3_cell())
+      allocate (table(5)%cell, source=new_tet10_cell())
    end function cell_table
 
    !> The cell with `name` (upper case), VTK code `vtk_type` or gmsh code `gmsh_type`, whichever

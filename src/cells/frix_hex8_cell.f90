@@ -58,6 +58,7 @@ contains
       cell%face_cell = 'QUAD4'
       cell%face_nodes = hex8_face_nodes
       cell%points = hex8_gauss_points
+      cell%rule_degree = 3
       allocate (cell%weights(8), source=1.0_dp)
       cell%vtk_type = hex8_vtk_type
       cell%gmsh_type = hex8_gmsh_type

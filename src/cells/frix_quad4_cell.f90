@@ -41,6 +41,7 @@ contains
       cell%face_cell = 'LINE2'
       cell%face_nodes = quad4_edge_nodes
       cell%points = quad4_gauss_points
+      cell%rule_degree = 3
       allocate (cell%weights(4), source=1.0_dp)
       cell%vtk_type = quad4_vtk_type
       cell%gmsh_type = quad4_gmsh_type

@@ -3,7 +3,8 @@
 !> (docs/architecture.md, "Cells"). A cell gives its natural node coordinates, its faces (local
 !> nodes in outward orientation and the faces' own cell type), its Gauss rule, its codes in
 !> VTK, gmsh and POS3D, its shape functions and the extrapolation of integration-point values
-!> to its nodes. One concrete cell per file (frix_hex8_cell, frix_quad4_cell), listed in
+!> to its nodes. One concrete cell per file (frix_hex8_cell, frix_quad4_cell,
+!> frix_tet4_cell, frix_tri3_cell), listed in
 !> frix_cell_registry.
 module frix_reference_cell
    use frix_kinds, only: dp
@@ -21,6 +22,11 @@ module frix_reference_cell
       integer, allocatable :: face_nodes(:, :)       !! (nodes per face, n_faces), outward
       real(dp), allocatable :: points(:, :)          !! (dimension, n_points), Gauss rule
       real(dp), allocatable :: weights(:)            !! (n_points)
+      !> The natural domain: the unit simplex (true) or [-1, 1]^dimension (false).
+      logical :: simplex = .false.
+      !> The rule integrates exactly the monomials of this degree: in each direction on
+      !> [-1, 1]^dimension (a tensor-product rule), in total on the simplex.
+      integer :: rule_degree = 0
       integer :: vtk_type = 0                        !! VTK cell type code
       integer :: gmsh_type = 0                       !! gmsh element type code
       character(len=:), allocatable :: pos3d_name    !! POS3D %ELEMENT.<name>, '' if none

@@ -4,7 +4,7 @@
 !> docs/contact.md, "In the global system".
 module frix_contact_pass
    use frix_kinds, only: dp
-   use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
+   use frix_mesh, only: mesh_t, surface_t
    use frix_surface_load, only: face_area_weights
    use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes
    use frix_contact_patches, only: surface_patches_t, surface_faces, free_edges
@@ -113,7 +113,7 @@ contains
       allocate (node_area(mesh%n_nodes), source=0.0_dp)
       n_slave = 0
       do k = 1, size(surface%elements)
-         face_nodes = mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), surface%elements(k))
+         face_nodes = mesh%face_nodes(surface%elements(k), surface%faces(k))
          coords = mesh%coords(:, face_nodes)
          call face_area_weights(coords, weights)
          do a = 1, 4

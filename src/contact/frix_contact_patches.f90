@@ -17,7 +17,7 @@ module frix_contact_patches
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_kinds, only: dp
-   use frix_mesh, only: hex8_face_nodes, mesh_t, surface_t
+   use frix_mesh, only: mesh_t, surface_t
    use frix_vector_algebra, only: cross_product
    use frix_contact_kernel, only: max_ring_nodes
    implicit none
@@ -52,7 +52,7 @@ contains
       integer :: faces(4, size(surface%elements))
       integer :: k
       do k = 1, size(surface%elements)
-         faces(:, k) = mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), surface%elements(k))
+         faces(:, k) = mesh%face_nodes(surface%elements(k), surface%faces(k))
       end do
    end function surface_faces
 

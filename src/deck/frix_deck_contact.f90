@@ -165,10 +165,12 @@ contains
       type(contact_pair_t), intent(inout) :: pair
       logical, intent(inout) :: ok
       character(len=*), intent(in), optional :: head   !! the line's first keyword (default PAIR)
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, what
       integer :: k
+      what = 'contact'   ! what a surface of other faces than HEX8's cannot carry yet
       if (present(head)) then
          call reader%expect_keyword(line, position, head, ok)
+         if (head == 'TIE') what = 'TIE'
       else
          call reader%expect_keyword(line, position, 'PAIR', ok)
       end if
@@ -187,6 +189,8 @@ contains
          if (pair%slave_surface == 0) then
             if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'unknown surface')
             ok = .false.
+         else
+            call reader%require_hex8_faces(line, position - 1, model%mesh, pair%slave_surface, what, ok)
          end if
       end if
       call reader%expect_keyword(line, position, 'MASTER', ok)
@@ -200,6 +204,8 @@ contains
          else if (pair%master_surface == pair%slave_surface) then
             call reader%report(line, position - 1, 'a surface cannot be in contact with itself')
             ok = .false.
+         else
+            call reader%require_hex8_faces(line, position - 1, model%mesh, pair%master_surface, what, ok)
          end if
       end if
    end subroutine read_pair_surfaces

@@ -10,6 +10,7 @@ module frix_deck_context
    use frix_id_map, only: id_map_t
    use frix_element, only: kinematics_linear, kinematics_total_lagrangian
    use frix_model, only: model_t
+   use frix_mesh, only: mesh_t
    use frix_deck_tokens, only: deck_line_t, parse_real, parse_integer
    use frix_deck_diagnostics, only: deck_diagnostics_t
    implicit none
@@ -90,6 +91,7 @@ module frix_deck_context
       procedure :: take_yes_no
       procedure :: take_choice
       procedure :: take_node_target
+      procedure :: require_hex8_faces
    end type deck_reader_t
 
    !> One pair of a keyword/value section as its pair reader gets it: the deck line, the pair's
@@ -581,4 +583,22 @@ contains
          joined = joined(1:i - 1)//'; '//joined(i + 1:)
       end do
    end function one_line
+   !> Report at (line, column), and set ok false, when surface `surface` holds a face of an
+   !> element other than a HEX8: `what` (pressure, contact) integrates only over HEX8 faces so
+   !> far. The message names the cell and the first such element.
+   subroutine require_hex8_faces(self, line, column, mesh, surface, what, ok)
+      class(deck_reader_t), intent(inout) :: self
+      type(deck_line_t), intent(in) :: line
+      integer, intent(in) :: column, surface
+      type(mesh_t), intent(in) :: mesh
+      character(len=*), intent(in) :: what
+      logical, intent(inout) :: ok
+      integer :: element
+      element = mesh%first_non_hex8_element(surface)
+      if (element == 0) return
+      call self%report(line, column, what//' on '//mesh%cell_name(element)//' faces is not supported yet '// &
+                       '(element '//to_string(mesh%element_ids(element))//' of surface "'// &
+                       mesh%surfaces(surface)%name//'" is a '//mesh%cell_name(element)//')')
+      ok = .false.
+   end subroutine require_hex8_faces
 end module frix_deck_context

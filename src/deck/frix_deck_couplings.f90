@@ -9,7 +9,6 @@
 !> of a TIE, nor prescribed by a Dirichlet condition (contact PAIRs may hold coupled nodes).
 module frix_deck_couplings
    use frix_strings, only: to_string
-   use frix_mesh, only: hex8_face_nodes
    use frix_mesh_checks, only: find_orphan_nodes
    use frix_mesh_selection, only: sorted_unique
    use frix_model, only: model_t, kinematic_coupling_t
@@ -102,7 +101,7 @@ contains
          k = model%mesh%find_surface(name)
          if (k > 0) then
             associate (faces => model%mesh%surfaces(k))
-               nodes = sorted_unique([(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(j)), faces%elements(j)), &
+               nodes = sorted_unique([(model%mesh%face_nodes(faces%elements(j), faces%faces(j)), &
                                        j=1, size(faces%elements))])
             end associate
          end if
@@ -294,7 +293,7 @@ contains
       if (surface == 0) return
       associate (faces => model%mesh%surfaces(surface))
          do j = 1, size(faces%elements)
-            if (any(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(j)), faces%elements(j)) == node)) then
+            if (any(model%mesh%face_nodes(faces%elements(j), faces%faces(j)) == node)) then
                on_surface = .true.
                return
             end if

@@ -2,7 +2,6 @@
 !> (docs/deck-format.md).
 module frix_deck_loads
    use frix_kinds, only: dp
-   use frix_mesh, only: hex8_face_nodes
    use frix_model, only: model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t
    use frix_deck_context, only: deck_reader_t, require, mark_nodes, resume_position, s_dirichlet, s_neumann, s_body_force
    use frix_strings, only: to_string
@@ -151,6 +150,8 @@ contains
                   if (pressure%surface == 0) then
                      ok = .false.
                      if (.not. reader%mesh_failed) call reader%report(line, 2, 'unknown surface')
+                  else
+                     call reader%require_hex8_faces(line, 2, model%mesh, pressure%surface, 'pressure', ok)
                   end if
                end if
                call reader%expect_keyword(line, position, 'PRESSURE', ok)
@@ -184,7 +185,7 @@ contains
                associate (surface => model%mesh%surfaces(pressure%surface))
                   do k = 1, size(surface%elements)
                      e = surface%elements(k)
-                     call mark_nodes(reader, model%mesh%connectivity(hex8_face_nodes(:, surface%faces(k)), e), i)
+                     call mark_nodes(reader, model%mesh%face_nodes(e, surface%faces(k)), i)
                   end do
                end associate
                cycle

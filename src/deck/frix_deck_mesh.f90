@@ -82,6 +82,7 @@ contains
       type(mesh_t), intent(out) :: mesh
       allocate (mesh%coords(3, 0), mesh%node_ids(0), mesh%connectivity(8, 0), mesh%element_ids(0))
       allocate (mesh%element_block(0), mesh%node_sets(0), mesh%element_sets(0), mesh%surfaces(0))
+      call mesh%set_cells([integer ::])
    end subroutine empty_mesh
 
    !> `NODE <id> COORD x y z`.

@@ -14,6 +14,7 @@ module frix_deck_properties
                                     element_shape_choices, element_shape_example, max_element_nodes
    use frix_id_map, only: id_map_t
    use frix_model, only: model_t
+   use frix_mesh, only: cell_index
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, property_t, require, extend_origins, extend_properties, &
                                 one_line, line_integer, resume_position, s_materials, s_elements
@@ -96,8 +97,8 @@ contains
    subroutine read_element_lines(reader, model)
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
-      integer, allocatable :: connectivity(:, :), ids(:), properties(:), origin(:)
-      integer :: i, position, id, n, existing, capacity, property, first_node, rows
+      integer, allocatable :: connectivity(:, :), ids(:), properties(:), origin(:), cells(:)
+      integer :: i, position, id, n, existing, capacity, property, first_node, rows, e
       logical :: ok
       type(id_map_t) :: element_ids
       type(element_shape_t) :: shape
@@ -108,7 +109,7 @@ contains
       rows = max_element_nodes()
       if (allocated(model%mesh%connectivity)) rows = size(model%mesh%connectivity, 1)
       allocate (connectivity(rows, capacity), source=0)
-      allocate (ids(capacity), properties(capacity), origin(capacity))
+      allocate (ids(capacity), properties(capacity), origin(capacity), cells(capacity))
       n = 0
       i = 0
       do while (reader%next_line(s_elements, i, position, ok))
@@ -139,12 +140,14 @@ contains
             ids(n) = id
             properties(n) = property
             origin(n) = i
+            cells(n) = cell_index(trim(shape%cell))
          end associate
       end do
       if (n == 0) return
       associate (mesh => model%mesh)
          mesh%connectivity = reshape([mesh%connectivity, connectivity(:, 1:n)], [rows, mesh%n_elements + n])
          mesh%element_ids = [mesh%element_ids, ids(1:n)]
+         call mesh%set_cells([(mesh%cell_of(e), e=1, mesh%n_elements), cells(1:n)])
          mesh%element_block = [mesh%element_block, spread(0, 1, n)]
          call extend_origins(reader%element_line, reader%element_token, mesh%n_elements, 0, 1)
          reader%element_line = [reader%element_line, origin(1:n)]
@@ -385,6 +388,14 @@ contains
             end if
             do k = 1, size(model%mesh%element_sets(set)%elements)
                element = model%mesh%element_sets(set)%elements(k)
+               if (model%mesh%cell_name(element) /= trim(shape%cell)) then
+                  ! a formulation is written for one cell type (the element registry's entry)
+                  call reader%report(line, 4, 'element '//to_string(model%mesh%element_ids(element))// &
+                                     ' of set "'//name//'" is a '//model%mesh%cell_name(element)//', element shape '// &
+                                     trim(shape%keyword)//' is for '//trim(shape%cell)//' cells')
+                  reader%property_failed = .true.
+                  exit
+               end if
                if (reader%element_property(element) /= 0 .and. reader%element_property(element) /= property) then
                   call reader%report(line, 2, 'element '//to_string(model%mesh%element_ids(element))// &
                                      ' already has a different property (line '// &

@@ -15,7 +15,7 @@
 module frix_deck_reader
    use frix_error, only: error_t
    use frix_strings, only: to_string
-   use frix_mesh_checks, only: check_hex8_jacobians, find_orphan_nodes
+   use frix_mesh_checks, only: check_element_jacobians, find_orphan_nodes
    use frix_model, only: model_t
    use frix_text_scanner, only: text_scanner_t, open_text_file
    use frix_deck_tokens, only: split_line, is_section_line, section_name
@@ -173,7 +173,7 @@ contains
       if (.not. reader%property_failed) call report_elements(reader, model, missing, 'has no material/property')
 
       if (model%mesh%n_elements > 0) then
-         call check_hex8_jacobians(model%mesh, bad, overflowing)
+         call check_element_jacobians(model%mesh, bad, overflowing)
          call report_elements(reader, model, bad, 'has a non-positive Jacobian (inverted or degenerate)')
          call report_elements(reader, model, overflowing, 'has a Jacobian beyond the range of real '// &
                               'numbers (coordinates too large)')

@@ -35,6 +35,7 @@ contains
             call reader%take_yes_no(line, position, 'LISTING', model%results%listing, ok)
          case ('POS3D')
             call reader%take_yes_no(line, position, 'POS3D', model%results%pos3d, ok)
+            if (ok .and. model%results%pos3d) call require_pos3d_cells(reader, model, line, position - 1, ok)
          case ('HDF5')
             call reader%take_yes_no(line, position, 'HDF5', model%results%hdf5, ok)
          case ('EVERY')
@@ -47,6 +48,25 @@ contains
          end select
       end associate
    end subroutine read_results_pair
+
+   !> POS3D holds BRICK8 elements only (docs/pos3d.md): an error naming the first element of
+   !> another cell.
+   subroutine require_pos3d_cells(reader, model, line, column, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      integer, intent(in) :: column
+      logical, intent(inout) :: ok
+      integer :: element
+      if (model%mesh%has_only_hex8()) return
+      do element = 1, model%mesh%n_elements
+         if (model%mesh%cell_name(element) /= 'HEX8') exit
+      end do
+      call reader%report(line, column, 'POS3D output holds BRICK8 (HEX8) elements only: element '// &
+                         to_string(model%mesh%element_ids(element))//' is a '// &
+                         model%mesh%cell_name(element)//' (write VTK or HDF5)')
+      ok = .false.
+   end subroutine require_pos3d_cells
 
    !> After HISTORY: `NODE <id> | SET <set> DOF <1-3> [KIND U|R] [SUM|MEAN]` or
    !> `CONTACT <pair id> FORCE DOF <1-3> | NORMAL`. Without SUM or MEAN the set must hold one

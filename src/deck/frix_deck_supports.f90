@@ -15,7 +15,6 @@ module frix_deck_supports
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_strings, only: to_string
-   use frix_mesh, only: hex8_face_nodes
    use frix_mesh_checks, only: connected_components
    use frix_model, only: model_t
    use frix_external_loads, only: prescribed_displacements
@@ -158,7 +157,7 @@ contains
          if (surface == 0) return
          associate (faces => model%mesh%surfaces(surface))
             do k = 1, size(faces%elements)
-               in_contact(model%mesh%connectivity(hex8_face_nodes(:, faces%faces(k)), faces%elements(k))) = .true.
+               in_contact(model%mesh%face_nodes(faces%elements(k), faces%faces(k))) = .true.
             end do
          end associate
       end subroutine mark_surface

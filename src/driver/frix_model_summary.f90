@@ -47,15 +47,21 @@ contains
              ' nominal increments in all'//nl
    end function model_summary
 
-   !> "  block k: <n> elements <formulation> (<kinematics>), material <id> <law>".
+   !> "  block k: <n> elements <formulation> (<kinematics>) on <cell> cells, material <id> <law>"
+   !> (the cell of the block's elements: a block has one formulation, and a formulation one cell).
    function block_line(model, k) result(line)
       type(model_t), intent(in) :: model
       integer, intent(in) :: k
       character(len=:), allocatable :: line
+      character(len=:), allocatable :: cell
+      integer :: first
+      first = findloc(model%mesh%element_block, k, dim=1)
+      cell = 'no'
+      if (first > 0) cell = model%mesh%cell_name(first)
       associate (block => model%blocks(k))
          line = '  block '//to_string(k)//': '//to_string(count(model%mesh%element_block == k))//' elements '// &
                 block%element%formulation%name//' ('//kinematics_name(block%element%formulation%kinematics)// &
-                '), material '//to_string(model%material_ids(block%material))//' '// &
+                ') on '//cell//' cells, material '//to_string(model%material_ids(block%material))//' '// &
                 model%materials(block%material)%law%name
       end associate
    end function block_line

@@ -124,7 +124,15 @@ contains
       type(increment_results_t), intent(inout) :: results
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: fint(:)
-      allocate (results%stress(6, 8, model%mesh%n_elements), results%strain(6, 8, model%mesh%n_elements))
+      integer :: k, n_points
+      ! the most integration points of any element (8 for HEX8); an element with fewer fills
+      ! the first ones, the rest stay 0
+      n_points = 0
+      do k = 1, size(model%blocks)
+         n_points = max(n_points, model%blocks(k)%element%formulation%n_points())
+      end do
+      allocate (results%stress(6, n_points, model%mesh%n_elements), results%strain(6, n_points, model%mesh%n_elements), &
+                source=0.0_dp)
       allocate (fint(3*model%mesh%n_nodes))
       call assemble_internal(model, state, fint, error, gp_stress=results%stress, gp_strain=results%strain)
       if (allocated(error)) return
@@ -294,14 +302,14 @@ contains
       type(model_t), intent(in) :: model
       type(increment_results_t), intent(in) :: results
       character(len=*), intent(in) :: quantity   !! 'stress' or 'strain'
-      real(dp), intent(in) :: gp(:, :, :)        !! (6, 8, n_elements)
+      real(dp), intent(in) :: gp(:, :, :)        !! (6, n_points, n_elements)
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: cell(:, :), nodal(:, :)
       allocate (cell(6, model%mesh%n_elements), nodal(6, model%mesh%n_nodes))
-      call cell_average(gp, cell)
+      call cell_average(gp, cell, model%mesh%cell_indices())
       call check_columns(model, results, 'element', quantity//' (element mean)', cell, error)
       if (allocated(error)) return
-      call nodal_extrapolated(model%mesh%connectivity, gp, nodal, error)
+      call nodal_extrapolated(model%mesh%connectivity, gp, nodal, error, model%mesh%cell_indices())
       if (allocated(error)) return
       call check_columns(model, results, 'node', quantity//' (extrapolated to the nodes)', nodal, error)
       if (allocated(error) .or. quantity /= 'stress') return

@@ -286,9 +286,9 @@ contains
       real(dp), allocatable :: gp(:, :, :)
       gp = reshape(field%values, [1, size(field%values, 1), size(field%values, 2)])
       allocate (nodal(1, model%mesh%n_nodes), cell(1, model%mesh%n_elements))
-      call nodal_extrapolated(model%mesh%connectivity, gp, nodal, error)
+      call nodal_extrapolated(model%mesh%connectivity, gp, nodal, error, model%mesh%cell_indices())
       if (allocated(error)) return
-      call cell_average(gp, cell)
+      call cell_average(gp, cell, model%mesh%cell_indices())
    end subroutine recovered_field
 
    subroutine write_hdf5(self, model, results, error)

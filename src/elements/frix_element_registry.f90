@@ -7,12 +7,14 @@
 !> Shapes (case-insensitive; frix_hex8_options):
 !>   HEX8      8-node hexahedron, option EAS 0 (default), 3, 9, 21 or 30
 !>   HEXA8-E3  CARAT's name of HEX8 with EAS 3
+!>   TET4      4-node tetrahedron, no options (frix_cell_solid)
 module frix_element_registry
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_property_list, only: property_list_t, property_spec_t, keyword_index, joined
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
    use frix_hex8_options, only: hex8_options, hex8_from_options, hexa8_e3_from_options
+   use frix_cell_solid, only: tet4_from_options, no_options
    implicit none
    private
 
@@ -41,6 +43,7 @@ module frix_element_registry
    type :: element_entry_t
       character(len=keyword_length) :: keyword   !! upper case, as printed
       character(len=keyword_length) :: family    !! named in node-count messages
+      character(len=keyword_length) :: cell      !! the reference cell of its elements (frix_cell_registry)
       integer :: n_nodes
       procedure(element_constructor), pointer, nopass :: create => null()
       procedure(option_specs), pointer, nopass :: options => null()
@@ -50,17 +53,20 @@ module frix_element_registry
    type :: element_shape_t
       character(len=keyword_length) :: keyword = ''
       character(len=keyword_length) :: family = ''
+      character(len=keyword_length) :: cell = ''   !! the cell its elements must have
       integer :: n_nodes = 0
       type(property_spec_t), allocatable :: options(:)
    end type element_shape_t
 
 contains
 
-   !> The registered shapes: one line per shape.
+   !> The registered shapes: one line per shape (keyword, family, cell, node count, constructor,
+   !> options).
    function element_table() result(table)
       type(element_entry_t), allocatable :: table(:)
-      table = [element_entry_t('HEX8', 'HEX8', 8, hex8_from_options, hex8_options), &
-               element_entry_t('HEXA8-E3', 'HEX8', 8, hexa8_e3_from_options, hex8_options)]
+      table = [element_entry_t('HEX8', 'HEX8', 'HEX8', 8, hex8_from_options, hex8_options), &
+               element_entry_t('HEXA8-E3', 'HEX8', 'HEX8', 8, hexa8_e3_from_options, hex8_options), &
+               element_entry_t('TET4', 'TET4', 'TET4', 4, tet4_from_options, no_options)]
    end function element_table
 
    !> The shape of `keyword` (any case); `found` false if no shape has it.
@@ -76,6 +82,7 @@ contains
       if (.not. found) return
       shape%keyword = table(i)%keyword
       shape%family = table(i)%family
+      shape%cell = table(i)%cell
       shape%n_nodes = table(i)%n_nodes
       shape%options = table(i)%options()
    end subroutine find_element_shape

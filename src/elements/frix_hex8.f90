@@ -36,6 +36,8 @@ module frix_hex8
 
    public :: hex8_t, new_hex8
    public :: max_local_iterations, local_tolerance
+   !> The kinematics and stress helpers that the solid elements over any cell share (frix_cell_solid).
+   public :: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, tensor_from_voigt
 
    integer :: d_, a_, g_  ! implied-do indices (direction, node, point) of the two constant tables below
    !> Shape function values N_a at point g: prod_i (1 + xi_ia xi_ig)/8, (8 nodes, 8 points).
@@ -303,7 +305,7 @@ contains
    !> F = I + Grad u (total Lagrangian) or F = I (linear); strain E = (F^T F - I)/2 or
    !> eps = sym(Grad u), Voigt with engineering shears.
    pure subroutine compatible_kinematics(dn_dx, u, total_lagrangian, deformation, strain)
-      real(dp), intent(in) :: dn_dx(3, 8)
+      real(dp), intent(in) :: dn_dx(:, :)   !! (3, n_nodes)
       real(dp), intent(in) :: u(:, :)
       logical, intent(in) :: total_lagrangian
       real(dp), intent(out) :: deformation(3, 3)
@@ -311,7 +313,7 @@ contains
       real(dp) :: gradient(3, 3), right_cauchy(3, 3)
       integer :: a, i, j
       gradient = 0.0_dp
-      do a = 1, 8
+      do a = 1, size(dn_dx, 2)
          do j = 1, 3
             do i = 1, 3
                gradient(i, j) = gradient(i, j) + u(i, a)*dn_dx(j, a)
@@ -366,14 +368,14 @@ contains
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
       logical, intent(in) :: finite   !! total Lagrangian: total = E, pk2 = S
-      real(dp), intent(in) :: total(6, 8)
+      real(dp), intent(in) :: total(:, :)         !! (6, n_points)
       real(dp), intent(in) :: state_old(:, :)
       real(dp), intent(inout) :: state_new(:, :)
-      real(dp), intent(out) :: pk2(6, 8), moduli(6, 6, 8)
+      real(dp), intent(out) :: pk2(:, :), moduli(:, :, :)   !! (6, n_points), (6, 6, n_points)
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: material_error
       integer :: g
-      do g = 1, 8
+      do g = 1, size(total, 2)
          call material%response(total(:, g), finite, state_old(:, g), state_new(:, g), pk2(:, g), &
                                 moduli(:, :, g), material_error)
          if (allocated(material_error)) then
@@ -744,10 +746,10 @@ contains
    !> dE_jk/du_ai = (F_ij N_a,k + F_ik N_a,j)/2, doubled in the shear rows. F = I gives the
    !> linear B.
    pure subroutine nonlinear_b(deformation, dn_dx, b_nl)
-      real(dp), intent(in) :: deformation(3, 3), dn_dx(3, 8)
-      real(dp), intent(out) :: b_nl(6, 3, 8)
+      real(dp), intent(in) :: deformation(3, 3), dn_dx(:, :)   !! F, (3, n_nodes)
+      real(dp), intent(out) :: b_nl(:, :, :)                   !! (6, 3, n_nodes)
       integer :: a, i
-      do a = 1, 8
+      do a = 1, size(dn_dx, 2)
          do i = 1, 3
             b_nl(1, i, a) = deformation(i, 1)*dn_dx(1, a)
             b_nl(2, i, a) = deformation(i, 2)*dn_dx(2, a)

@@ -2,48 +2,61 @@
 !> von Mises equivalent stress.
 !>
 !> Integration-point arrays are `gp(n_components, n_points, n_elements)`, the points in the order
-!> of the cell's Gauss rule (frix_hex8_cell: point g beside node g).
+!> of the element's cell's Gauss rule (frix_hex8_cell: point g beside node g), n_points the
+!> most of any element; an element with fewer points (a TET4's one) fills the first ones. The
+!> optional `element_cell` gives each element's cell (an index into the cell registry's table,
+!> frix_mesh's `element_cell`); without it every element is a HEX8.
 !>
 !> Nodal values: each element gives a value at each of its nodes, and a node receives the
 !> arithmetic mean over the elements that contain it (unweighted; discontinuities between
 !> blocks of different materials are smeared). The element's nodal values are
 !>   - `nodal_average`: the element's mean over its points, copied to all its nodes;
-!>   - `nodal_extrapolated` (HEX8 with 8 points): the field the cell recovers from its Gauss
-!>     values, evaluated at the nodes, f_a = sum_g E(a, g) f_g with the cell's extrapolation
-!>     matrix E (frix_hex8_cell: the trilinear field through the 8 Gauss values).
+!>   - `nodal_extrapolated`: the field the cell recovers from its Gauss values, evaluated at
+!>     the nodes, f_a = sum_g E(a, g) f_g with the cell's extrapolation matrix E (HEX8: the
+!>     trilinear field through the 8 Gauss values; TET4: the one point's value).
 module frix_field_recovery
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
-   use frix_hex8_cell, only: hex8_cell_t, new_hex8_cell
+   use frix_cell_registry, only: cell_entry_t, cell_table, hex8_cell_index
    implicit none
    private
 
    public :: cell_average, nodal_average, nodal_extrapolated, von_mises, von_mises_field
 
+   !> One cell's extrapolation matrix E(a, g).
+   type :: extrapolation_t
+      real(dp), allocatable :: matrix(:, :)
+   end type extrapolation_t
+
 contains
 
    !> Mean over the integration points of each element (unweighted: exact for the Gauss
    !> rules of undistorted elements, whose weights are equal), (n_components, n_elements).
-   pure subroutine cell_average(gp, cell)
+   subroutine cell_average(gp, cell, element_cell)
       real(dp), intent(in) :: gp(:, :, :)     !! (n_components, n_points, n_elements)
       real(dp), intent(out) :: cell(:, :)     !! (n_components, n_elements)
-      integer :: e
+      integer, intent(in), optional :: element_cell(:)
+      integer, allocatable :: points(:)
+      integer :: e, n
+      points = point_counts(size(gp, 2), size(gp, 3), element_cell)
       do e = 1, size(gp, 3)
-         cell(:, e) = sum(gp(:, :, e), dim=2)/real(size(gp, 2), dp)
+         n = points(e)
+         cell(:, e) = sum(gp(:, 1:n, e), dim=2)/real(n, dp)
       end do
    end subroutine cell_average
 
    !> Nodal values as the mean, over the elements at each node, of the element's point mean.
    !> Nodes that belong to no element receive 0.
-   pure subroutine nodal_average(connectivity, gp, nodal)
-      integer, intent(in) :: connectivity(:, :)  !! (nodes per element, n_elements) internal node numbers
+   subroutine nodal_average(connectivity, gp, nodal, element_cell)
+      integer, intent(in) :: connectivity(:, :)  !! (nodes per element, n_elements) internal node numbers, 0: none
       real(dp), intent(in) :: gp(:, :, :)        !! (n_components, n_points, n_elements)
       real(dp), intent(out) :: nodal(:, :)       !! (n_components, n_nodes)
+      integer, intent(in), optional :: element_cell(:)
       real(dp), allocatable :: cell(:, :), element_values(:, :, :)  ! heap, not stack: meshes can be large
       integer :: e, a
       allocate (cell(size(gp, 1), size(gp, 3)), element_values(size(gp, 1), size(connectivity, 1), size(gp, 3)))
-      call cell_average(gp, cell)
+      call cell_average(gp, cell, element_cell)
       do e = 1, size(gp, 3)
          do a = 1, size(connectivity, 1)
             element_values(:, a, e) = cell(:, e)
@@ -52,32 +65,64 @@ contains
       call scatter_mean(connectivity, element_values, nodal)
    end subroutine nodal_average
 
-   !> Nodal values from the 2x2x2 Gauss values by trilinear extrapolation within each element,
-   !> then the mean over the elements at each node. Fails unless there are 8 points and 8
-   !> nodes per element.
-   pure subroutine nodal_extrapolated(connectivity, gp, nodal, error)
-      integer, intent(in) :: connectivity(:, :)  !! (8, n_elements) internal node numbers
-      real(dp), intent(in) :: gp(:, :, :)        !! (n_components, 8, n_elements)
+   !> Nodal values from each element's Gauss values by its cell's extrapolation, then the mean
+   !> over the elements at each node. Fails when an element's cell has more points than `gp`
+   !> or more nodes than the rows of `connectivity`.
+   subroutine nodal_extrapolated(connectivity, gp, nodal, error, element_cell)
+      integer, intent(in) :: connectivity(:, :)  !! (nodes per element, n_elements) internal node numbers, 0: none
+      real(dp), intent(in) :: gp(:, :, :)        !! (n_components, n_points, n_elements)
       real(dp), intent(out) :: nodal(:, :)       !! (n_components, n_nodes)
       type(error_t), allocatable, intent(out) :: error
-      type(hex8_cell_t) :: cell
-      real(dp), allocatable :: extrapolation(:, :)
-      real(dp), allocatable :: element_values(:, :, :)
-      integer :: e
-      if (size(gp, 2) /= 8 .or. size(connectivity, 1) /= 8) then
-         call fatal_error(error, 'nodal_extrapolated needs 8 integration points and 8 nodes per element, got '// &
-                          to_string(size(gp, 2))//' points and '//to_string(size(connectivity, 1))//' nodes')
-         return
-      end if
-      cell = new_hex8_cell()
-      extrapolation = cell%extrapolation()
-      allocate (element_values(size(gp, 1), 8, size(gp, 3)))
+      integer, intent(in), optional :: element_cell(:)
+      type(cell_entry_t), allocatable :: table(:)
+      type(extrapolation_t), allocatable :: matrices(:)
+      real(dp), allocatable :: element_values(:, :, :), matrix(:, :)
+      integer :: e, k, n_points, n_nodes
+      table = cell_table()
+      allocate (matrices(size(table)))
+      do k = 1, size(table)
+         associate (cell => table(k)%cell)   ! (a direct table(k)%cell%extrapolation() crashes gfortran 12)
+            matrix = cell%extrapolation()
+         end associate
+         call move_alloc(matrix, matrices(k)%matrix)
+      end do
+      allocate (element_values(size(gp, 1), size(connectivity, 1), size(gp, 3)), source=0.0_dp)
       do e = 1, size(gp, 3)
+         k = hex8_cell_index   ! without element_cell
+         if (present(element_cell)) k = element_cell(e)
+         n_nodes = size(matrices(k)%matrix, 1)
+         n_points = size(matrices(k)%matrix, 2)
+         if (n_points > size(gp, 2) .or. n_nodes > size(connectivity, 1)) then
+            call fatal_error(error, 'nodal_extrapolated: a '//table(k)%cell%name//' needs '//to_string(n_points)// &
+                             ' integration points and '//to_string(n_nodes)//' nodes per element, got '// &
+                             to_string(size(gp, 2))//' points and '//to_string(size(connectivity, 1))//' nodes')
+            return
+         end if
          ! element_values(:, a, e) = sum_g gp(:, g, e) * extrapolation(a, g)
-         element_values(:, :, e) = matmul(gp(:, :, e), transpose(extrapolation))
+         element_values(:, 1:n_nodes, e) = matmul(gp(:, 1:n_points, e), transpose(matrices(k)%matrix))
       end do
       call scatter_mean(connectivity, element_values, nodal)
    end subroutine nodal_extrapolated
+
+   !> The integration points of each element: its cell's, else (no element_cell) all of gp's.
+   function point_counts(max_points, n_elements, element_cell) result(points)
+      integer, intent(in) :: max_points, n_elements
+      integer, intent(in), optional :: element_cell(:)
+      integer, allocatable :: points(:)
+      type(cell_entry_t), allocatable :: table(:)
+      integer, allocatable :: cell_points(:)
+      integer :: k, e
+      allocate (points(n_elements), source=max_points)
+      if (.not. present(element_cell)) return
+      table = cell_table()
+      allocate (cell_points(size(table)))
+      do k = 1, size(table)
+         cell_points(k) = size(table(k)%cell%weights)
+      end do
+      do e = 1, n_elements
+         points(e) = min(cell_points(element_cell(e)), max_points)
+      end do
+   end function point_counts
 
    !> nodal(:, n) = mean of element_values(:, a, e) over all (a, e) with connectivity(a, e) = n.
    pure subroutine scatter_mean(connectivity, element_values, nodal)
@@ -92,6 +137,7 @@ contains
       do e = 1, size(connectivity, 2)
          do a = 1, size(connectivity, 1)
             node = connectivity(a, e)
+            if (node == 0) cycle   ! past the element's own nodes
             nodal(:, node) = nodal(:, node) + element_values(:, a, e)
             count(node) = count(node) + 1
          end do

@@ -4,7 +4,9 @@
 !>   /                      attributes frix_version, deck_path, title, layout_version
 !>   /mesh/coordinates      (n_nodes, 3) reference coordinates
 !>   /mesh/node_ids, /mesh/element_ids, /mesh/element_block     user ids, block index
-!>   /mesh/connectivity     (n_elements, 8) 1-based internal node numbers, HEX8 order of frix_mesh
+!>   /mesh/connectivity     (n_elements, 8) 1-based internal node numbers, the cell's order
+!>                          (frix_mesh), 0 past the nodes of a smaller cell (TET4: 4)
+!>   /mesh/cell_types       (n_elements) VTK cell type codes, only in a mesh with other cells than HEX8
 !>   /mesh/node_sets/<name>, /mesh/element_sets/<name>          1-based internal numbers
 !>   /mesh/surfaces/<name>/elements, .../faces                  element number, local face 1..6
 !>   /increments/<NNNNNN>/  running number 000001, 000002, ... in the order written;
@@ -148,6 +150,7 @@ contains
       type(hdf5_location_t), intent(in) :: group
       type(mesh_t), intent(in) :: mesh
       type(error_t), allocatable, intent(out) :: error
+      integer :: e
 
       call write_dataset(group, 'coordinates', mesh%coords, error)
       if (allocated(error)) return
@@ -159,6 +162,12 @@ contains
       if (allocated(error)) return
       call write_dataset(group, 'element_block', mesh%element_block, error)
       if (allocated(error)) return
+      if (.not. mesh%has_only_hex8()) then
+         ! a mesh of other cells than HEX8 (a mesh of HEX8 only has no such dataset)
+         call write_dataset(group, 'cell_types', [(mesh%cells(mesh%cell_of(e))%cell%vtk_type, e=1, mesh%n_elements)], &
+                            error)
+         if (allocated(error)) return
+      end if
       call write_sets(group, mesh, error)
    end subroutine write_mesh
 

@@ -91,6 +91,11 @@ contains
          call fatal_error(error, 'POS3D output: the mesh lacks coordinates or connectivity')
          return
       end if
+      if (.not. mesh%has_only_hex8()) then
+         call fatal_error(error, 'POS3D output: frix writes BRICK8 (HEX8) elements only, the mesh has others '// &
+                          '(write VTK or HDF5 instead)')
+         return
+      end if
       if (size(mesh%coords, 1) /= 3 .or. size(mesh%coords, 2) /= mesh%n_nodes .or. &
           size(mesh%connectivity, 1) /= 8 .or. size(mesh%connectivity, 2) /= mesh%n_elements) then
          call fatal_error(error, 'POS3D output: mesh arrays do not match n_nodes = '//to_string(mesh%n_nodes)// &

@@ -207,9 +207,16 @@ contains
       call put_reals(file, 'coordinates', mesh%coords)
       call file%put('</Points>')
       call file%put('<Cells>')
-      call put_integers(file, 'connectivity', 'Int64', reshape(mesh%connectivity - 1, [8*mesh%n_elements]), per_line=8)
-      call put_integers(file, 'offsets', 'Int64', [(8*i, i=1, mesh%n_elements)])
-      call put_integers(file, 'types', 'UInt8', [(hex8_vtk_type, i=1, mesh%n_elements)])
+      if (mesh%has_only_hex8()) then
+         call put_integers(file, 'connectivity', 'Int64', reshape(mesh%connectivity - 1, [8*mesh%n_elements]), per_line=8)
+         call put_integers(file, 'offsets', 'Int64', [(8*i, i=1, mesh%n_elements)])
+         call put_integers(file, 'types', 'UInt8', [(hex8_vtk_type, i=1, mesh%n_elements)])
+      else
+         ! each element its own cell's nodes and VTK code
+         call put_integers(file, 'connectivity', 'Int64', [(mesh%element_nodes(i) - 1, i=1, mesh%n_elements)], per_line=8)
+         call put_integers(file, 'offsets', 'Int64', cumulative([(mesh%node_count(i), i=1, mesh%n_elements)]))
+         call put_integers(file, 'types', 'UInt8', [(mesh%cells(mesh%cell_of(i))%cell%vtk_type, i=1, mesh%n_elements)])
+      end if
       call file%put('</Cells>')
       call file%put('</Piece>')
       call file%put('</UnstructuredGrid>')
@@ -264,13 +271,25 @@ contains
       real(dp), intent(in) :: gp(:, :, :)
       real(dp), intent(out) :: nodal(:, :), cell(:, :)
       type(error_t), allocatable, intent(out) :: error
-      call cell_average(gp, cell)
+      call cell_average(gp, cell, mesh%cell_indices())
       if (size(gp, 2) == 8) then
-         call nodal_extrapolated(mesh%connectivity, gp, nodal, error)
+         call nodal_extrapolated(mesh%connectivity, gp, nodal, error, mesh%cell_indices())
       else
-         call nodal_average(mesh%connectivity, gp, nodal)
+         call nodal_average(mesh%connectivity, gp, nodal, mesh%cell_indices())
       end if
    end subroutine recover
+
+   !> The running sums of `counts`.
+   pure function cumulative(counts) result(sums)
+      integer, intent(in) :: counts(:)
+      integer :: sums(size(counts))
+      integer :: i
+      if (size(counts) == 0) return
+      sums(1) = counts(1)
+      do i = 2, size(counts)
+         sums(i) = sums(i - 1) + counts(i)
+      end do
+   end function cumulative
 
    !> frix Voigt (xx yy zz xy xz yz) to VTK symmetric tensor order (XX YY ZZ XY YZ XZ), the
    !> shears multiplied by `shear_factor` (1 for stress, 1/2 for engineering strains).

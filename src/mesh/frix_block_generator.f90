@@ -16,7 +16,7 @@
 module frix_block_generator
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_mesh, only: mesh_t
+   use frix_mesh, only: mesh_t, cell_index
    implicit none
    private
 
@@ -71,6 +71,7 @@ contains
       allocate (block%coords(3, block%n_nodes), block%node_ids(block%n_nodes))
       allocate (block%connectivity(8, block%n_elements), block%element_ids(block%n_elements))
       allocate (block%element_block(block%n_elements), source=0)
+      call block%set_cells(spread(cell_index('HEX8'), 1, block%n_elements))
 
       do k = 0, nz
          do j = 0, ny

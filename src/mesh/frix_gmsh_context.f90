@@ -12,10 +12,12 @@ module frix_gmsh_context
    use frix_id_map, only: id_map_t
    use frix_hex8_cell, only: hex8_gmsh_type
    use frix_quad4_cell, only: quad4_gmsh_type
+   use frix_tet4_cell, only: tet4_gmsh_type
+   use frix_tri3_cell, only: tri3_gmsh_type
    implicit none
    private
 
-   public :: gmsh_quadrangle, gmsh_hexahedron
+   public :: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, gmsh_tetrahedron, is_volume_cell
    public :: integer_list_t, push, reserve, name_t, raw_mesh_t
    public :: claim_section, skip_section, next_data_line, expect_section_end
    public :: read_count, read_count_line, check_room
@@ -24,6 +26,7 @@ module frix_gmsh_context
 
    !> The gmsh element types frix reads: the reference cells' codes (frix_hex8_cell, frix_quad4_cell).
    integer, parameter :: gmsh_quadrangle = quad4_gmsh_type, gmsh_hexahedron = hex8_gmsh_type
+   integer, parameter :: gmsh_triangle = tri3_gmsh_type, gmsh_tetrahedron = tet4_gmsh_type
 
    !> A growable list of default integers.
    type :: integer_list_t
@@ -62,6 +65,12 @@ module frix_gmsh_context
    end type raw_mesh_t
 
 contains
+
+   !> Whether gmsh element type `element_type` is a volume cell frix reads (HEX8, TET4).
+   pure logical function is_volume_cell(element_type)
+      integer, intent(in) :: element_type
+      is_volume_cell = element_type == gmsh_hexahedron .or. element_type == gmsh_tetrahedron
+   end function is_volume_cell
 
    ! ---- sections ---------------------------------------------------------------------------
 

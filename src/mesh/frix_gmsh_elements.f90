@@ -8,7 +8,7 @@ module frix_gmsh_elements
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_text_scanner, only: text_scanner_t
-   use frix_gmsh_context, only: gmsh_hexahedron, raw_mesh_t, push, reserve, next_data_line, &
+   use frix_gmsh_context, only: is_volume_cell, raw_mesh_t, push, reserve, next_data_line, &
                                 expect_section_end, read_count, read_count_line, read_blocks_header, &
                                 read_block_start, read_block_count, check_blocks_total, read_positive_id, &
                                 read_physical_tag
@@ -34,7 +34,7 @@ contains
          if (allocated(error)) return
          call read_element_start_v2(scanner, id, element_type, physical, error)
          if (allocated(error)) return
-         if (physical == 0 .and. element_type /= gmsh_hexahedron) cycle
+         if (physical == 0 .and. .not. is_volume_cell(element_type)) cycle
          call gmsh_type_info(element_type, n_nodes, dim)
          group = 0
          if (physical /= 0) then
@@ -147,7 +147,7 @@ contains
       do i = 1, block_count
          call next_data_line(scanner, '$Elements', error)
          if (allocated(error)) return
-         if (size(groups) == 0 .and. element_type /= gmsh_hexahedron) cycle
+         if (size(groups) == 0 .and. .not. is_volume_cell(element_type)) cycle
          call read_positive_id(scanner, 'element', id, error)
          if (allocated(error)) return
          call add_record(scanner, raw, id, element_type, n_nodes, groups, error)

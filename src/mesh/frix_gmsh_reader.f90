@@ -16,7 +16,7 @@
 !>   Without any physical group (gmsh then writes every element) there are no sets.
 !> - other elements in no physical group (lines, points, ... that gmsh writes) are skipped.
 !> Hexahedra are taken as they are: an inverted one (negative Jacobian, e.g. from a mirrored
-!> geometry) is reported by `check_hex8_jacobians`, never silently renumbered here.
+!> geometry) is reported by `check_element_jacobians`, never silently renumbered here.
 !>
 !> Rejected: a second $MeshFormat, $PhysicalNames, $Entities, $Nodes or $Elements section;
 !> a 4.1 $Entities after $Elements; a physical tag that is not positive (0 is allowed only as

@@ -1,17 +1,20 @@
 !> The content of a gmsh .msh file (`raw_mesh_t`, read by frix_gmsh_reader) made a `mesh_t`:
-!> the nodes (ids unique), the 8-node hexahedra in file order (a hexahedron that format 2.2
-!> writes once per physical volume kept once), and one node set per physical group, one
-!> element set per physical volume and one surface per physical surface (each quadrilateral
-!> matched to the boundary face of a hexahedron with the same four nodes). Sets are in
+!> the nodes (ids unique), the volume elements (8-node hexahedra, HEX8, and 4-node tetrahedra,
+!> TET4) in file order (an element that format 2.2 writes once per physical volume kept once),
+!> and one node set per physical group, one element set per physical volume and one surface
+!> per physical surface (each quadrilateral or triangle matched to the boundary face of a
+!> volume element with the same nodes). Sets are in
 !> ascending (dim, tag) order and named from `$PhysicalNames`, else "<dim>:<tag>". Errors
 !> name the file and the line of the element or node concerned.
 module frix_gmsh_to_mesh
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_id_map, only: id_map_t
-   use frix_mesh, only: mesh_t, hex8_face_nodes
+   use frix_mesh, only: mesh_t, cell_index
    use frix_mesh_checks, only: node_to_elements
-   use frix_gmsh_context, only: gmsh_quadrangle, gmsh_hexahedron, raw_mesh_t
+   use frix_mesh_selection, only: sort_nodes
+   use frix_gmsh_context, only: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, &
+                                is_volume_cell, raw_mesh_t
    implicit none
    private
 
@@ -30,7 +33,7 @@ contains
 
       call number_nodes(file_name, raw, node_map, mesh, error)
       if (allocated(error)) return
-      call collect_hexahedra(file_name, raw, node_map, mesh, record_element, error)
+      call collect_volume_elements(file_name, raw, node_map, mesh, record_element, error)
       if (allocated(error)) return
       call merge_copies(mesh, record_element)
       allocate (mesh%element_block(mesh%n_elements), source=0)
@@ -62,9 +65,9 @@ contains
       mesh%coords = raw%coords(:, 1:raw%n_nodes)
    end subroutine number_nodes
 
-   !> The hexahedra, in file order; records with the same id must have the same nodes.
-   !> `record_element(r)` is the element of hexahedron record r (0 for other records).
-   subroutine collect_hexahedra(file_name, raw, node_map, mesh, record_element, error)
+   !> The volume elements, in file order; records with the same id must have the same nodes.
+   !> `record_element(r)` is the element of volume record r (0 for other records).
+   subroutine collect_volume_elements(file_name, raw, node_map, mesh, record_element, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
       type(id_map_t), intent(in) :: node_map
@@ -72,21 +75,24 @@ contains
       integer, allocatable, intent(out) :: record_element(:)
       type(error_t), allocatable, intent(out) :: error
       type(id_map_t) :: element_map
-      integer, allocatable :: nodes(:)
-      integer :: n_records, n_hexahedra, r, element, existing
+      integer, allocatable :: nodes(:), cells(:)
+      integer :: n_records, n_volume, r, element, existing, row(8)
       n_records = raw%record_ids%count
-      n_hexahedra = count(raw%record_types%items(1:n_records) == gmsh_hexahedron)
-      allocate (mesh%connectivity(8, n_hexahedra), mesh%element_ids(n_hexahedra), record_element(n_records))
+      n_volume = count([(is_volume_cell(raw%record_types%items(r)), r=1, n_records)])
+      allocate (mesh%connectivity(8, n_volume), mesh%element_ids(n_volume), record_element(n_records))
+      allocate (cells(n_volume))
       record_element = 0
-      call element_map%clear(n_hexahedra)
+      call element_map%clear(n_volume)
       element = 0
       do r = 1, n_records
-         if (raw%record_types%items(r) /= gmsh_hexahedron) cycle
+         if (.not. is_volume_cell(raw%record_types%items(r))) cycle
          call record_nodes(file_name, raw, r, node_map, nodes, error)
          if (allocated(error)) return
+         row = 0
+         row(1:size(nodes)) = nodes
          call element_map%insert(raw%record_ids%items(r), element + 1, existing)
          if (existing /= 0) then
-            if (any(mesh%connectivity(:, existing) /= nodes)) then
+            if (any(mesh%connectivity(:, existing) /= row)) then
                call fail_at_record(file_name, raw, r, error, 'duplicate element id '// &
                                    to_string(raw%record_ids%items(r))//' with different nodes')
                return
@@ -94,15 +100,17 @@ contains
             record_element(r) = existing
          else
             element = element + 1
-            mesh%connectivity(:, element) = nodes
+            mesh%connectivity(:, element) = row
             mesh%element_ids(element) = raw%record_ids%items(r)
+            cells(element) = cell_index(merge('HEX8', 'TET4', raw%record_types%items(r) == gmsh_hexahedron))
             record_element(r) = element
          end if
       end do
       mesh%n_elements = element
       mesh%connectivity = mesh%connectivity(:, 1:element)
       mesh%element_ids = mesh%element_ids(1:element)
-   end subroutine collect_hexahedra
+      call mesh%set_cells(cells(1:element))
+   end subroutine collect_volume_elements
 
    !> Format 2.2 writes a hexahedron once per physical volume holding it, each copy with an id
    !> of its own (gmsh 4.8): keep the first of hexahedra with identical node lists, and point
@@ -138,11 +146,13 @@ contains
          n_kept = n_kept + 1
          mesh%connectivity(:, n_kept) = mesh%connectivity(:, element)
          mesh%element_ids(n_kept) = mesh%element_ids(element)
+         mesh%element_cell(n_kept) = mesh%element_cell(element)
       end do
       where (record_element > 0) record_element = new_number(max(record_element, 1))
       mesh%n_elements = n_kept
       mesh%connectivity = mesh%connectivity(:, 1:n_kept)
       mesh%element_ids = mesh%element_ids(1:n_kept)
+      mesh%element_cell = mesh%element_cell(1:n_kept)
    end subroutine merge_copies
 
    !> Records of each group, compressed: group g holds
@@ -174,8 +184,8 @@ contains
       end do
    end subroutine index_group_records
 
-   !> Element types of the groups: volumes first, since a wrong volume type (2nd order,
-   !> tetrahedra) is the cause of a wrong surface type.
+   !> Element types of the groups: volumes first, since a wrong volume type (2nd order) is the
+   !> cause of a wrong surface type.
    subroutine check_group_types(file_name, raw, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
@@ -186,14 +196,16 @@ contains
             do k = raw%record_group_first%items(r), raw%record_group_first%items(r + 1) - 1
                if (raw%group_dims%items(raw%record_groups%items(k)) /= dim) cycle
                associate (element_type => raw%record_types%items(r), id => raw%record_ids%items(r))
-                  if (dim == 3 .and. element_type /= gmsh_hexahedron) then
-                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra are supported: element '// &
+                  if (dim == 3 .and. .not. is_volume_cell(element_type)) then
+                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra (type 5) and 4-node '// &
+                                         'tetrahedra (type 4) are supported: element '// &
                                          to_string(id)//' has type '//to_string(element_type))
                      return
                   end if
-                  if (dim == 2 .and. element_type /= gmsh_quadrangle) then
-                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals are supported on '// &
-                                         'surfaces: element '//to_string(id)//' has type '//to_string(element_type))
+                  if (dim == 2 .and. element_type /= gmsh_quadrangle .and. element_type /= gmsh_triangle) then
+                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals (type 3) and 3-node '// &
+                                         'triangles (type 2) are supported on surfaces: element '//to_string(id)// &
+                                         ' has type '//to_string(element_type))
                      return
                   end if
                end associate
@@ -203,7 +215,8 @@ contains
    end subroutine check_group_types
 
    !> Node sets, element sets and surfaces of the physical groups, in the given order (element
-   !> types already checked: hexahedra in volumes, 4-node quadrilaterals in surfaces).
+   !> types already checked: hexahedra or tetrahedra in volumes, quadrilaterals or triangles in
+   !> surfaces).
    subroutine build_sets(file_name, raw, order, group_offsets, group_records, record_element, node_map, mesh, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
@@ -296,8 +309,8 @@ contains
       end do
    end subroutine check_new_name
 
-   !> Stamp with `stamp` the hexahedron face of quadrilateral record r (its `nodes`); it must
-   !> match exactly one face.
+   !> Stamp with `stamp` the element face of surface record r (its `nodes`); it must match
+   !> exactly one face.
    subroutine stamp_face(file_name, raw, r, mesh, offsets, adjacency, nodes, stamp, face_stamp, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
@@ -309,31 +322,34 @@ contains
       integer :: element, face, n_matches
       call match_face(mesh, offsets, adjacency, nodes, element, face, n_matches)
       if (n_matches == 0) then
-         call fail_at_record(file_name, raw, r, error, 'quadrilateral '//to_string(raw%record_ids%items(r))// &
-                             ' matches no face of a hexahedron')
+         call fail_at_record(file_name, raw, r, error, 'surface element '//to_string(raw%record_ids%items(r))// &
+                             ' matches no face of a volume element')
       else if (n_matches > 1) then
-         call fail_at_record(file_name, raw, r, error, 'quadrilateral '//to_string(raw%record_ids%items(r))// &
-                             ' lies on a face shared by two hexahedra (an interior face)')
+         call fail_at_record(file_name, raw, r, error, 'surface element '//to_string(raw%record_ids%items(r))// &
+                             ' lies on a face shared by two volume elements (an interior face)')
       else
          face_stamp(6*(element - 1) + face) = stamp
       end if
    end subroutine stamp_face
 
-   !> The hexahedron faces with the nodes of `quad` (any order): `n_matches` of them, the
+   !> The element faces with the nodes of `face_record` (any order): `n_matches` of them, the
    !> last one found is (element, face).
-   subroutine match_face(mesh, offsets, adjacency, quad, element, face, n_matches)
+   subroutine match_face(mesh, offsets, adjacency, face_record, element, face, n_matches)
       type(mesh_t), intent(in) :: mesh
-      integer, intent(in) :: offsets(:), adjacency(:), quad(:)
+      integer, intent(in) :: offsets(:), adjacency(:), face_record(:)
       integer, intent(out) :: element, face, n_matches
-      integer :: key(4), candidate(4), k, f, e
-      key = sorted4(quad)
+      integer, allocatable :: key(:), candidate(:)
+      integer :: k, f, e
+      key = sort_nodes(face_record)
       element = 0
       face = 0
       n_matches = 0
-      do k = offsets(quad(1)), offsets(quad(1) + 1) - 1
+      do k = offsets(face_record(1)), offsets(face_record(1) + 1) - 1
          e = adjacency(k)
-         do f = 1, 6
-            candidate = sorted4(mesh%connectivity(hex8_face_nodes(:, f), e))
+         do f = 1, mesh%face_count(e)
+            candidate = mesh%face_nodes(e, f)
+            if (size(candidate) /= size(key)) cycle
+            candidate = sort_nodes(candidate)
             if (all(candidate == key)) then
                n_matches = n_matches + 1
                element = e
@@ -342,27 +358,6 @@ contains
          end do
       end do
    end subroutine match_face
-
-   pure function sorted4(values) result(sorted)
-      integer, intent(in) :: values(4)
-      integer :: sorted(4)
-      sorted = values
-      call order_pair(sorted(1), sorted(2))
-      call order_pair(sorted(3), sorted(4))
-      call order_pair(sorted(1), sorted(3))
-      call order_pair(sorted(2), sorted(4))
-      call order_pair(sorted(2), sorted(3))
-   contains
-      pure subroutine order_pair(low, high)
-         integer, intent(inout) :: low, high
-         integer :: swap
-         if (low > high) then
-            swap = low
-            low = high
-            high = swap
-         end if
-      end subroutine order_pair
-   end function sorted4
 
    !> Internal node numbers of record r; error naming the record's line if one is undefined.
    subroutine record_nodes(file_name, raw, r, node_map, nodes, error)

@@ -41,8 +41,9 @@ module frix_inp_context
       type(integer_list_t) :: node_ids, node_lines, node_files
       real(dp), allocatable :: coords(:, :)
       type(id_map_t) :: node_map
-      ! hexahedra: nodes of element e are connectivity(8e-7:8e)
-      type(integer_list_t) :: element_ids, element_lines, element_files, connectivity
+      ! elements: nodes of element e are connectivity(8e-7:8e), 0 past its cell's node count;
+      ! element_cells: its cell (index in the cell table, frix_mesh's cell_index)
+      type(integer_list_t) :: element_ids, element_lines, element_files, connectivity, element_cells
       type(id_map_t) :: element_map
       ! sets and surfaces
       integer :: n_sets = 0, n_surfaces = 0
@@ -55,6 +56,9 @@ module frix_inp_context
       logical :: pending = .false.
       integer :: pending_id = 0, pending_count = 0, pending_file = 0, pending_line = 0
       integer :: pending_nodes(8) = 0
+      ! the cell of the current *ELEMENT keyword's elements, its node count and name (C3D8: HEX8)
+      integer :: element_cell = 0, element_node_count = 8
+      character(len=:), allocatable :: element_cell_name
    end type inp_data_t
 
 contains
@@ -164,7 +168,8 @@ contains
       call push(data%node_files, file)
    end subroutine add_node
 
-   !> A hexahedron (its id not yet defined) with internal node numbers `nodes`.
+   !> An element of the current *ELEMENT's cell (its id not yet defined) with internal node
+   !> numbers `nodes` (0 past the cell's node count).
    subroutine add_element(data, id, nodes, file, line)
       type(inp_data_t), intent(inout) :: data
       integer, intent(in) :: id, nodes(8), file, line
@@ -172,6 +177,7 @@ contains
       do k = 1, 8
          call push(data%connectivity, nodes(k))
       end do
+      call push(data%element_cells, data%element_cell)
       call push(data%element_ids, id)
       call push(data%element_lines, line)
       call push(data%element_files, file)

@@ -15,6 +15,7 @@ module frix_inp_data_lines
    use frix_text_scanner, only: text_scanner_t
    use frix_gmsh_context, only: push, shorten
    use frix_inp_context, only: inp_data_t, node_kind, element_kind, find_set, add_node, add_element
+   use frix_cell_registry, only: cell_entry_t, cell_table
    implicit none
    private
 
@@ -49,8 +50,9 @@ contains
       if (data%target_set > 0) call push(data%sets(data%target_set)%members, data%node_ids%count)
    end subroutine read_node_line
 
-   !> `id, n1, ..., n8` of *ELEMENT, or the rest of an element whose line ended with a comma.
-   !> A complete hexahedron joins the keyword's ELSET if it has one.
+   !> `id, n1, ..., nk` of *ELEMENT (k the nodes of the keyword's cell), or the rest of an
+   !> element whose line ended with a comma. A complete element joins the keyword's ELSET if it
+   !> has one.
    subroutine read_element_line(scanner, data, file, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(inp_data_t), intent(inout) :: data
@@ -63,10 +65,11 @@ contains
          if (allocated(error)) return
          data%pending = .true.
          data%pending_count = 0
+         data%pending_nodes = 0
          data%pending_file = file
          data%pending_line = scanner%line_number
       end if
-      do while (.not. scanner%at_end_of_line() .and. data%pending_count < 8)
+      do while (.not. scanner%at_end_of_line() .and. data%pending_count < data%element_node_count)
          call read_id(scanner, 'node', node_id, error)
          if (allocated(error)) return
          node = data%node_map%lookup(node_id)
@@ -78,18 +81,19 @@ contains
          data%pending_count = data%pending_count + 1
          data%pending_nodes(data%pending_count) = node
       end do
-      if (data%pending_count < 8) then
+      if (data%pending_count < data%element_node_count) then
          line = trim(scanner%line())
          if (len(line) > 0) then
             if (line(len(line):len(line)) == ',') return   ! continued on the next line
          end if
          call scanner%fail(error, 'element '//to_string(data%pending_id)//' has '//to_string(data%pending_count)// &
-                           ' nodes, an 8-node hexahedron needs 8')
+                           ' nodes, a '//data%element_cell_name//' needs '//to_string(data%element_node_count))
          return
       end if
       call scanner%expect_end_of_line(error)
       if (allocated(error)) then
-         error%message = error%message//' (an 8-node hexahedron has 8 nodes)'
+         error%message = error%message//' (a '//data%element_cell_name//' has '// &
+                         to_string(data%element_node_count)//' nodes)'
          return
       end if
       call data%element_map%insert(data%pending_id, data%element_ids%count + 1, existing)
@@ -167,13 +171,14 @@ contains
 
    !> `element or element set, S1..S6` of *SURFACE, TYPE=ELEMENT: the faces join the surface.
    !> CalculiX's face k of a C3D8 (User's Manual, *DLOAD: 1: 1-2-3-4, 2: 5-8-7-6, 3: 1-5-6-2,
-   !> 4: 2-6-7-3, 5: 3-7-8-4, 6: 4-8-5-1) has the nodes of frix's local face k (frix_mesh).
+   !> 4: 2-6-7-3, 5: 3-7-8-4, 6: 4-8-5-1) has the nodes of frix's local face k (frix_hex8_cell),
+   !> and so does face k of a C3D4 (1: 1-2-3, 2: 1-4-2, 3: 2-4-3, 4: 3-4-1; frix_tet4_cell).
    subroutine read_surface_line(scanner, data, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(inp_data_t), intent(inout) :: data
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: token, label
-      integer, allocatable :: elements(:)
+      integer, allocatable :: elements(:), faces_of_cell(:)
       integer :: id, element, set, face, k
       logical :: found
       token = scanner%peek_token()
@@ -205,6 +210,15 @@ contains
          return
       end if
       face = (face + 1)/2
+      faces_of_cell = face_counts()
+      do k = 1, size(elements)
+         if (face > faces_of_cell(data%element_cells%items(elements(k)))) then
+            call scanner%fail_at_token(error, 'element '//to_string(data%element_ids%items(elements(k)))// &
+                                       ' has no face '//to_upper(label)//' (it has '// &
+                                       to_string(faces_of_cell(data%element_cells%items(elements(k))))//')')
+            return
+         end if
+      end do
       call scanner%expect_end_of_line(error)
       if (allocated(error)) return
       associate (surface => data%surfaces(data%target_surface))
@@ -261,4 +275,12 @@ contains
          name = 'element'
       end if
    end function kind_name
+   !> The faces of each cell of the cell table.
+   function face_counts() result(counts)
+      integer, allocatable :: counts(:)
+      type(cell_entry_t), allocatable :: table(:)
+      integer :: k
+      table = cell_table()
+      counts = [(table(k)%cell%n_faces(), k=1, size(table))]
+   end function face_counts
 end module frix_inp_data_lines

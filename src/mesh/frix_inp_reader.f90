@@ -3,14 +3,15 @@
 !>
 !> What becomes of the file's content:
 !> - *NODE (optional NSET=): every node, in file order (ids kept in `node_ids`);
-!> - *ELEMENT, TYPE=C3D8 | C3D8R | C3D8I (optional ELSET=): 8-node hexahedra, in file order
-!>   (ids kept; the node order of C3D8 is frix's HEX8 order, frix_mesh). The type only says
-!>   that the element is an 8-node hexahedron: the formulation (integration, EAS) is the one
-!>   of the deck's STRUCTURE ELEMENTS property. Another TYPE is an error naming it;
+!> - *ELEMENT, TYPE=C3D8 | C3D8R | C3D8I (8-node hexahedra, HEX8 cells) or TYPE=C3D4 (4-node
+!>   tetrahedra, TET4 cells), optional ELSET=: the elements in file order (ids kept; the node
+!>   orders of C3D8 and C3D4 are those of frix's HEX8 and TET4 cells). The type only gives the
+!>   cell: the formulation (integration, EAS) is the one of the deck's STRUCTURE ELEMENTS
+!>   property. Another TYPE is an error naming it;
 !> - *NSET, NSET= and *ELSET, ELSET= (optional GENERATE): node sets and element sets, sorted
 !>   and unique; a set defined again gets the new members too (as in Abaqus);
-!> - *SURFACE, NAME= (TYPE=ELEMENT, the default): a surface of element faces S1..S6, which
-!>   are frix's local faces 1..6;
+!> - *SURFACE, NAME= (TYPE=ELEMENT, the default): a surface of element faces S1..S6 of a
+!>   hexahedron (S1..S4 of a tetrahedron), which are frix's local faces 1..6 (1..4);
 !> - *INCLUDE, INPUT=: the lines of that file (path relative to the including file), read
 !>   in place: data lines there continue the keyword before the *INCLUDE;
 !> - *HEADING and every other keyword (materials, *STEP, *BOUNDARY, loads, ...), with its
@@ -23,7 +24,7 @@ module frix_inp_reader
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string, to_upper
    use frix_text_scanner, only: text_scanner_t, open_text_file
-   use frix_mesh, only: mesh_t
+   use frix_mesh, only: mesh_t, cell_index
    use frix_mesh_selection, only: sorted_unique
    use frix_gmsh_context, only: shorten
    use frix_inp_keyword, only: inp_keyword_t, read_keyword_line
@@ -136,7 +137,7 @@ contains
       end select
    end subroutine start_keyword
 
-   !> *ELEMENT, TYPE=..., ELSET=...: only the 8-node hexahedra.
+   !> *ELEMENT, TYPE=..., ELSET=...: 8-node hexahedra or 4-node tetrahedra.
    subroutine start_element(scanner, keyword, data, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(inp_keyword_t), intent(in) :: keyword
@@ -153,11 +154,18 @@ contains
       end if
       select case (element_type)
       case ('C3D8', 'C3D8R', 'C3D8I')
+         data%element_cell_name = 'HEX8'
+         data%element_node_count = 8
+      case ('C3D4')
+         data%element_cell_name = 'TET4'
+         data%element_node_count = 4
       case default
          call scanner%fail_at_token(error, 'element type '//shorten(keyword%value_of('TYPE'))// &
-                                    ' is not supported: frix reads only 8-node hexahedra (C3D8, C3D8R, C3D8I)')
+                                    ' is not supported: frix reads 8-node hexahedra (C3D8, C3D8R, C3D8I)'// &
+                                    ' and 4-node tetrahedra (C3D4)')
          return
       end select
+      data%element_cell = cell_index(data%element_cell_name)
       data%mode = mode_element
       if (keyword%has('ELSET')) data%target_set = set_index(data, element_kind, keyword%value_of('ELSET'))
    end subroutine start_element
@@ -249,7 +257,8 @@ contains
       if (.not. data%pending) return
       call fatal_error(error, where_defined(data, data%pending_file, data%pending_line)//': element '// &
                        to_string(data%pending_id)//' has '//to_string(data%pending_count)// &
-                       ' nodes, an 8-node hexahedron needs 8 (its line ends with a comma, but no data line follows)')
+                       ' nodes, a '//data%element_cell_name//' needs '//to_string(data%element_node_count)// &
+                       ' (its line ends with a comma, but no data line follows)')
    end subroutine check_no_pending
 
    !> The mesh of what was read.
@@ -270,6 +279,7 @@ contains
          mesh%connectivity = reshape(data%connectivity%items(1:8*mesh%n_elements), [8, mesh%n_elements])
          mesh%element_ids = data%element_ids%items(1:mesh%n_elements)
       end if
+      call mesh%set_cells(data%element_cells%items(1:mesh%n_elements))
       allocate (mesh%element_block(mesh%n_elements), source=0)
       n_node_sets = 0
       do k = 1, data%n_sets

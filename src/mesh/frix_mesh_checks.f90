@@ -1,4 +1,4 @@
-!> Checks and queries on a `mesh_t`: inverted HEX8, orphan nodes, connected components,
+!> Checks and queries on a `mesh_t`: inverted elements, orphan nodes, connected components,
 !> user-id look-ups, bounding box, node-to-element adjacency, and appending one mesh to another.
 module frix_mesh_checks
    use frix_kinds, only: dp
@@ -6,63 +6,69 @@ module frix_mesh_checks
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t, node_set_t, element_set_t, surface_t
    use frix_id_map, only: id_map_t
-   use frix_hex8_cell, only: hex8_cell_t, new_hex8_cell
+   use frix_reference_cell, only: reference_cell_t
+   use frix_cell_registry, only: cell_entry_t, cell_table
    implicit none
    private
 
-   public :: check_hex8_jacobians, find_orphan_nodes, connected_components
+   public :: check_element_jacobians, find_orphan_nodes, connected_components
    public :: build_node_lookup, build_element_lookup, mesh_bounding_box
    public :: node_to_elements, merge_meshes
 
 contains
 
    !> Internal numbers of the elements whose Jacobian determinant det(dx/dxi) is <= 0 at one
-   !> of the points of the cell's Gauss rule (HEX8: 2 x 2 x 2, xi = +-1/sqrt 3) or at the
-   !> centre: where the element is integrated (inverted or degenerate elements). A strongly distorted
-   !> element may have det < 0 at a corner and still be usable: the 7-element patch of
-   !> MacNeal & Harder has one such element (tests/verification V1). The trilinear map is
-   !> x(xi) = sum_a N_a(xi) x_a, N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta)/8. A mirrored
-   !> mesh (node order clockwise) has det < 0 everywhere.
+   !> of the points of their cell's Gauss rule (HEX8: 2 x 2 x 2, xi = +-1/sqrt 3; TET4: the
+   !> centroid) or at the cell's centroid (HEX8: xi = 0): where the element is integrated
+   !> (inverted or degenerate elements). A strongly distorted HEX8 may have det < 0 at a corner
+   !> and still be usable: the 7-element patch of MacNeal & Harder has one such element
+   !> (tests/verification V1). The map is x(xi) = sum_a N_a(xi) x_a with the cell's shape
+   !> functions. A mirrored mesh (node order clockwise) has det < 0 everywhere.
    !> `overflowing`: the elements whose determinant is not finite (coordinates so large that
    !> their products leave the range of real numbers); computed with the floating-point traps
    !> off (a build that traps overflow reports them too), the flags cleared on return.
-   subroutine check_hex8_jacobians(mesh, bad_elements, overflowing)
+   subroutine check_element_jacobians(mesh, bad_elements, overflowing)
       use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_set_flag, ieee_usual
       use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
       type(mesh_t), intent(in) :: mesh
       integer, allocatable, intent(out) :: bad_elements(:)
       integer, allocatable, intent(out) :: overflowing(:)
       logical, allocatable :: is_bad(:), is_infinite(:)
-      type(hex8_cell_t) :: cell
-      real(dp) :: points(3, 9), x(3, 8), determinant
+      real(dp), allocatable :: x(:, :)
+      real(dp) :: determinant
       integer :: element, point
+      type(cell_entry_t), allocatable :: table(:)
+      table = cell_table()
       call ieee_set_halting_mode(ieee_usual, .false.)
-      cell = new_hex8_cell()
-      points(:, 1:8) = cell%points
-      points(:, 9) = 0
       allocate (is_bad(mesh%n_elements), is_infinite(mesh%n_elements), source=.false.)
       do element = 1, mesh%n_elements
-         x = mesh%coords(:, mesh%connectivity(:, element))
-         do point = 1, 9
-            determinant = jacobian_determinant(cell, x, points(:, point))
-            if (.not. ieee_is_finite(determinant)) then
-               is_infinite(element) = .true.
-               exit
-            else if (determinant <= 0) then
-               is_bad(element) = .true.
-               exit
-            end if
-         end do
+         associate (cell => table(mesh%cell_of(element))%cell)
+            x = mesh%coords(:, mesh%element_nodes(element))
+            do point = 1, cell%n_points() + 1
+               if (point <= cell%n_points()) then
+                  determinant = jacobian_determinant(cell, x, cell%points(:, point))
+               else
+                  determinant = jacobian_determinant(cell, x, sum(cell%node_coordinates, dim=2)/cell%n_nodes)
+               end if
+               if (.not. ieee_is_finite(determinant)) then
+                  is_infinite(element) = .true.
+                  exit
+               else if (determinant <= 0) then
+                  is_bad(element) = .true.
+                  exit
+               end if
+            end do
+         end associate
       end do
       bad_elements = pack([(element, element=1, mesh%n_elements)], is_bad)
       overflowing = pack([(element, element=1, mesh%n_elements)], is_infinite)
       call ieee_set_flag(ieee_usual, .false.)
-   end subroutine check_hex8_jacobians
+   end subroutine check_element_jacobians
 
    !> det(dx/dxi) of the cell's map x(xi) = sum_a N_a(xi) x_a with nodal coordinates x(3, n_nodes)
    !> at natural point xi.
    pure real(dp) function jacobian_determinant(cell, x, xi) result(determinant)
-      type(hex8_cell_t), intent(in) :: cell
+      class(reference_cell_t), intent(in) :: cell
       real(dp), intent(in) :: x(:, :), xi(:)
       real(dp) :: values(cell%n_nodes), derivatives(3, cell%n_nodes), jacobian(3, 3)
       call cell%shape_functions(xi, values, derivatives)
@@ -81,7 +87,7 @@ contains
       allocate (used(mesh%n_nodes))
       used = .false.
       do element = 1, mesh%n_elements
-         used(mesh%connectivity(:, element)) = .true.
+         used(mesh%element_nodes(element)) = .true.
       end do
       orphans = pack([(node, node=1, mesh%n_nodes)], .not. used)
    end subroutine find_orphan_nodes
@@ -102,7 +108,7 @@ contains
       end do
       tree_size = 1
       do element = 1, mesh%n_elements
-         do a = 2, 8
+         do a = 2, mesh%node_count(element)
             call unite(mesh%connectivity(1, element), mesh%connectivity(a, element))
          end do
       end do
@@ -200,7 +206,7 @@ contains
       allocate (offsets(mesh%n_nodes + 1))
       offsets = 0
       do element = 1, mesh%n_elements
-         do a = 1, 8
+         do a = 1, mesh%node_count(element)
             node = mesh%connectivity(a, element)
             offsets(node + 1) = offsets(node + 1) + 1
          end do
@@ -212,7 +218,7 @@ contains
       allocate (elements(offsets(mesh%n_nodes + 1) - 1))
       next = offsets(1:mesh%n_nodes)
       do element = 1, mesh%n_elements
-         do a = 1, 8
+         do a = 1, mesh%node_count(element)
             node = mesh%connectivity(a, element)
             elements(next(node)) = element
             next(node) = next(node) + 1
@@ -286,6 +292,7 @@ contains
          call append_integer_columns(target%connectivity, n_elements, &
                                      source%connectivity(:, 1:source%n_elements) + n_nodes)
          call append_integers(target%element_ids, n_elements, source%element_ids(1:source%n_elements))
+         call append_cells(target, n_elements, source)
          if (.not. allocated(target%element_block)) allocate (target%element_block(n_elements), source=0)
          if (allocated(source%element_block)) then
             call append_integers(target%element_block, n_elements, source%element_block(1:source%n_elements))
@@ -321,6 +328,25 @@ contains
          target%surfaces = [target%surfaces, surfaces]
       end if
    end subroutine merge_meshes
+
+   !> The cell types of source's elements after target's first `n_used` (a mesh without cell
+   !> types is HEX8: its cell_of).
+   subroutine append_cells(target, n_used, source)
+      type(mesh_t), intent(inout) :: target
+      integer, intent(in) :: n_used
+      type(mesh_t), intent(in) :: source
+      integer, allocatable :: cells(:)
+      integer :: e
+      if (.not. (allocated(target%element_cell) .or. allocated(source%element_cell))) return
+      allocate (cells(n_used + source%n_elements))
+      do e = 1, n_used
+         cells(e) = target%cell_of(e)
+      end do
+      do e = 1, source%n_elements
+         cells(n_used + e) = source%cell_of(e)
+      end do
+      call target%set_cells(cells)
+   end subroutine append_cells
 
    ! ---- private: append to the first `n_used` entries of an allocatable array -------------
 

@@ -2,12 +2,12 @@
 !> nodes lie in a box (NODE SETS and SURFACES of a deck, docs/deck-format.md).
 module frix_mesh_selection
    use frix_kinds, only: dp
-   use frix_mesh, only: mesh_t, surface_t, hex8_face_nodes
+   use frix_mesh, only: mesh_t, surface_t
    use frix_sorted_order, only: sorted_order
    implicit none
    private
 
-   public :: nodes_in_box, boundary_faces_in_box, sorted_unique
+   public :: nodes_in_box, boundary_faces_in_box, sorted_unique, sort_nodes
 
 contains
 
@@ -49,7 +49,7 @@ contains
    end function sorted_unique
 
    !> `SURF <name> BOX xmin ymin zmin xmax ymax zmax` or `SURF <name> FACES e f e f ...`.
-   !> Faces that belong to exactly one element and whose 4 nodes lie in the box. Candidate
+   !> Faces that belong to exactly one element and whose nodes all lie in the box. Candidate
    !> faces (nodes in the box) are sorted by their sorted node numbers; a face shared by two
    !> elements has both copies among the candidates, so it appears twice and is dropped.
    subroutine boundary_faces_in_box(mesh, box, tolerance, surface)
@@ -57,7 +57,7 @@ contains
       real(dp), intent(in) :: box(6), tolerance
       type(surface_t), intent(out) :: surface
       logical, allocatable :: inside(:)
-      integer, allocatable :: keys(:, :), elements(:), faces(:), order(:)
+      integer, allocatable :: keys(:, :), elements(:), faces(:), order(:), face(:)
       integer :: e, f, n, k, count
       allocate (inside(mesh%n_nodes))
       do k = 1, mesh%n_nodes
@@ -65,17 +65,19 @@ contains
       end do
       n = 0
       do e = 1, mesh%n_elements
-         do f = 1, 6
-            if (all(inside(mesh%connectivity(hex8_face_nodes(:, f), e)))) n = n + 1
+         do f = 1, mesh%face_count(e)
+            if (all(inside(mesh%face_nodes(e, f)))) n = n + 1
          end do
       end do
       allocate (keys(4, n), elements(n), faces(n))
       n = 0
       do e = 1, mesh%n_elements
-         do f = 1, 6
-            if (all(inside(mesh%connectivity(hex8_face_nodes(:, f), e)))) then
+         do f = 1, mesh%face_count(e)
+            face = mesh%face_nodes(e, f)
+            if (all(inside(face))) then
                n = n + 1
-               keys(:, n) = sort4(mesh%connectivity(hex8_face_nodes(:, f), e))
+               keys(:, n) = 0   ! a triangle's key: its 3 nodes sorted, then 0
+               keys(1:size(face), n) = sort_nodes(face)
                elements(n) = e
                faces(n) = f
             end if
@@ -101,12 +103,13 @@ contains
       surface%faces = surface%faces(1:count)
    end subroutine boundary_faces_in_box
 
-   pure function sort4(values) result(sorted)
-      integer, intent(in) :: values(4)
-      integer :: sorted(4)
+   !> A few integers (a face's nodes) in ascending order (insertion sort).
+   pure function sort_nodes(values) result(sorted)
+      integer, intent(in) :: values(:)
+      integer :: sorted(size(values))
       integer :: i, j, swap
       sorted = values
-      do i = 2, 4
+      do i = 2, size(values)
          j = i
          do while (j > 1)
             if (sorted(j - 1) <= sorted(j)) exit
@@ -116,6 +119,6 @@ contains
             j = j - 1
          end do
       end do
-   end function sort4
+   end function sort_nodes
 
 end module frix_mesh_selection

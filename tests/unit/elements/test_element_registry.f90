@@ -63,8 +63,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: create_error
       class(element_t), allocatable :: element
-      call create_element('TET4', eas(0), kinematics_linear, element, create_error)
-      call check_message_contains(error, create_error, 'unknown element shape "TET4"')
+      call create_element('TET10', eas(0), kinematics_linear, element, create_error)
+      call check_message_contains(error, create_error, 'unknown element shape "TET10"')
       if (allocated(error)) return
       call check_message_contains(error, create_error, 'HEX8, HEXA8-E3')
    end subroutine test_unknown_shape
@@ -113,10 +113,10 @@ contains
       if (allocated(error)) return
       call check(error, shape%options(1)%name == 'EAS' .and. shape%options(1)%whole, 'EAS option')
       if (allocated(error)) return
-      call find_element_shape('TET4', shape, found)
-      call check(error, .not. found, 'TET4 is no shape')
+      call find_element_shape('TET10', shape, found)
+      call check(error, .not. found, 'TET10 is no shape')
       if (allocated(error)) return
-      call check(error, element_shape_choices() == 'HEX8 or HEXA8-E3' .and. element_shape_example() == 'HEX8' &
+      call check(error, element_shape_choices() == 'HEX8, HEXA8-E3 or TET4' .and. element_shape_example() == 'HEX8' &
                  .and. max_element_nodes() == 8, 'choices '//element_shape_choices())
    end subroutine test_shape_info
 

@@ -12,7 +12,7 @@ module test_gmsh_reader
    use frix_error, only: error_t
    use frix_testing, only: unittest_t, new_unittest, check, check_close, check_message_contains, output_path
    use frix_strings, only: to_string
-   use frix_mesh, only: mesh_t, hex8_face_nodes
+   use frix_mesh, only: mesh_t
    use frix_gmsh_reader, only: read_gmsh
    use test_data_location, only: data_path
    implicit none
@@ -33,7 +33,9 @@ contains
                new_unittest('no_physical_groups', test_no_groups), &
                new_unittest('hexahedra_in_two_volumes', test_two_volumes), &
                new_unittest('cube_files_are_valid', test_cube_files), &
-               new_unittest('parametric_nodes_v41', test_parametric_nodes)]
+               new_unittest('parametric_nodes_v41', test_parametric_nodes), &
+               new_unittest('tetrahedra_v41', test_tetrahedra), &
+               new_unittest('hexahedra_and_a_tetrahedron', test_tetrahedron)]
    end subroutine collect_gmsh_reader
 
    subroutine collect_gmsh_errors(tests)
@@ -49,7 +51,6 @@ contains
                new_unittest('duplicate_node', test_duplicate_node), &
                new_unittest('bad_count_v22', test_count_v22), &
                new_unittest('bad_count_v41', test_count_v41), &
-               new_unittest('tetrahedron_in_volume', test_tetrahedron), &
                new_unittest('second_order_in_volume', test_second_order), &
                new_unittest('quad_matching_no_face', test_unmatched_quad), &
                new_unittest('quad_on_interior_face', test_interior_face), &
@@ -154,8 +155,8 @@ contains
                  'left = face 6 of element 1')
    end subroutine check_sets
 
-   !> The outward normal of a face, (x3 - x1) x (x4 - x2) of its nodes in hex8_face_nodes
-   !> order, normalised, must be -z on "bottom", +z on "top", -x on "left" (exact for unit cubes).
+   !> The outward normal of a face, (x3 - x1) x (x4 - x2) of its nodes in the cell's face order
+   !> ((x2 - x1) x (x3 - x1) on a triangle), normalised, must be -z on "bottom", +z on "top", -x on "left" (exact for unit cubes).
    subroutine test_v22_surface_normals(error)
       type(error_t), allocatable, intent(out) :: error
       type(mesh_t) :: mesh
@@ -173,17 +174,23 @@ contains
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: expected(3)
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: x(3, 4), diagonal_1(3), diagonal_2(3), normal(3)
+      real(dp), allocatable :: x(:, :)
+      real(dp) :: diagonal_1(3), diagonal_2(3), normal(3)
       integer :: surface, i, k
       surface = mesh%find_surface(name)
       call check(error, surface > 0, 'surface '//name//' exists')
       if (allocated(error)) return
       do i = 1, size(mesh%surfaces(surface)%elements)
          associate (element => mesh%surfaces(surface)%elements(i), face => mesh%surfaces(surface)%faces(i))
-            x = mesh%coords(:, mesh%connectivity(hex8_face_nodes(:, face), element))
+            x = mesh%coords(:, mesh%face_nodes(element, face))
          end associate
+         ! a quadrilateral's diagonals, a triangle's two edges from node 1
          diagonal_1 = x(:, 3) - x(:, 1)
          diagonal_2 = x(:, 4) - x(:, 2)
+         if (size(x, 2) == 3) then
+            diagonal_1 = x(:, 2) - x(:, 1)
+            diagonal_2 = x(:, 3) - x(:, 1)
+         end if
          normal = [diagonal_1(2)*diagonal_2(3) - diagonal_1(3)*diagonal_2(2), &
                    diagonal_1(3)*diagonal_2(1) - diagonal_1(1)*diagonal_2(3), &
                    diagonal_1(1)*diagonal_2(2) - diagonal_1(2)*diagonal_2(1)]
@@ -349,26 +356,72 @@ contains
       call expect_error('error_count_v41.msh', '80: bad counts: the node blocks hold more than the 12 nodes', error)
    end subroutine test_count_v41
 
+   !> A unit cube of 24 tetrahedra (cube_tet_v41.msh): every element a TET4 with positive volume,
+   !> the volumes summing to 1; the physical surface "bottom" is 4 triangles matched to TET4
+   !> faces turning outward (-z); its node set holds the nodes at z = 0.
+   subroutine test_tetrahedra(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: read_error
+      real(dp) :: x(3, 4), volume, total
+      integer :: e, k
+      call read_gmsh(data_path('cube_tet_v41.msh'), mesh, read_error)
+      call check(error, .not. allocated(read_error), 'cube_tet_v41.msh is read')
+      if (allocated(error)) return
+      call check(error, mesh%n_elements == 24 .and. all([(mesh%cell_name(e) == 'TET4', e=1, 24)]), '24 TET4')
+      if (allocated(error)) return
+      total = 0
+      do e = 1, mesh%n_elements
+         x = mesh%coords(:, mesh%element_nodes(e))
+         do k = 2, 4
+            x(:, k) = x(:, k) - x(:, 1)
+         end do
+         volume = dot_product(x(:, 2), [x(2, 3)*x(3, 4) - x(3, 3)*x(2, 4), x(3, 3)*x(1, 4) - x(1, 3)*x(3, 4), &
+                                        x(1, 3)*x(2, 4) - x(2, 3)*x(1, 4)])/6
+         call check(error, volume > 0, 'element '//to_string(e)//' volume '//to_string(volume))
+         if (allocated(error)) return
+         total = total + volume
+      end do
+      call check_close(error, total, 1.0_dp, 0.0_dp, 1.0e-14_dp, 'volume of the cube')
+      if (allocated(error)) return
+      call check(error, size(mesh%surfaces(mesh%find_surface('bottom'))%faces) == 4, '4 bottom triangles')
+      if (allocated(error)) return
+      call check_normals(mesh, 'bottom', [0.0_dp, 0.0_dp, -1.0_dp], error)
+      if (allocated(error)) return
+      associate (bottom => mesh%node_sets(mesh%find_node_set('bottom'))%nodes)
+         call check(error, size(bottom) == count(mesh%coords(3, :) == 0) .and. all(mesh%coords(3, bottom) == 0), &
+                    'bottom node set')
+      end associate
+   end subroutine test_tetrahedra
+
+   !> Two hexahedra and a tetrahedron (type 4) in one physical volume: read, each with its cell.
    subroutine test_tetrahedron(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('error_tetrahedron.msh', '39: only 8-node hexahedra are supported: element 11 has type 4', error)
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: read_error
+      call read_gmsh(data_path('mixed_hex_tet.msh'), mesh, read_error)
+      call check(error, .not. allocated(read_error), 'a tetrahedron is read')
+      if (allocated(error)) return
+      call check(error, mesh%n_elements == 3 .and. mesh%cell_name(1) == 'HEX8' .and. mesh%cell_name(3) == 'TET4' &
+                 .and. all(mesh%element_nodes(3) == [1, 2, 3, 5]), 'the tetrahedron''s cell and nodes')
    end subroutine test_tetrahedron
 
    !> gmsh -order 2 gives 27-node hexahedra (type 12) in the volume and 9-node quadrilaterals
    !> on the surfaces: the volume's error comes first.
    subroutine test_second_order(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('block_order2_v41.msh', '178: only 8-node hexahedra are supported: element 9 has type 12', error)
+      call expect_error('block_order2_v41.msh', '178: only 8-node hexahedra (type 5) and 4-node '// &
+                        'tetrahedra (type 4) are supported: element 9 has type 12', error)
    end subroutine test_second_order
 
    subroutine test_unmatched_quad(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('error_unmatched_quad.msh', '32: quadrilateral 4 matches no face of a hexahedron', error)
+      call expect_error('error_unmatched_quad.msh', '32: surface element 4 matches no face of a volume element', error)
    end subroutine test_unmatched_quad
 
    subroutine test_interior_face(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('error_interior_face.msh', '32: quadrilateral 4 lies on a face shared by two hexahedra', error)
+      call expect_error('error_interior_face.msh', '32: surface element 4 lies on a face shared by two volume elements', error)
    end subroutine test_interior_face
 
    ! ---- malformed input (files written by the tests) ---------------------------------------

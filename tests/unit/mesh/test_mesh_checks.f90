@@ -6,7 +6,7 @@ module test_mesh_checks
    use frix_strings, only: to_string
    use frix_mesh, only: mesh_t
    use frix_id_map, only: id_map_t
-   use frix_mesh_checks, only: check_hex8_jacobians, find_orphan_nodes, connected_components, &
+   use frix_mesh_checks, only: check_element_jacobians, find_orphan_nodes, connected_components, &
                                build_node_lookup, build_element_lookup, mesh_bounding_box, node_to_elements, &
                                merge_meshes
    use test_gmsh_reader, only: read_block
@@ -38,7 +38,7 @@ contains
       integer, allocatable :: bad(:), overflowing(:)
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
-      call check_hex8_jacobians(mesh, bad, overflowing)
+      call check_element_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 0, 'no inverted element in block_v22.msh')
    end subroutine test_valid_jacobians
 
@@ -51,7 +51,7 @@ contains
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%connectivity(:, 2) = mesh%connectivity([5, 6, 7, 8, 1, 2, 3, 4], 2)
-      call check_hex8_jacobians(mesh, bad, overflowing)
+      call check_element_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 1, 'one element flagged, got '//to_string(size(bad)))
       if (allocated(error)) return
       call check(error, bad(1) == 2, 'element 2 flagged')
@@ -65,7 +65,7 @@ contains
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%coords(1, :) = -mesh%coords(1, :)
-      call check_hex8_jacobians(mesh, bad, overflowing)
+      call check_element_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 2, 'both elements flagged, got '//to_string(size(bad)))
    end subroutine test_mirrored_mesh
 
@@ -81,7 +81,7 @@ contains
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%coords(:, mesh%connectivity(7, 2)) = [1.1_dp, 0.1_dp, 0.1_dp]
-      call check_hex8_jacobians(mesh, bad, overflowing)
+      call check_element_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 1, 'one element flagged, got '//to_string(size(bad)))
       if (allocated(error)) return
       call check(error, bad(1) == 2, 'element 2 flagged')
@@ -96,7 +96,7 @@ contains
       call read_block('block_v22.msh', mesh, error)
       if (allocated(error)) return
       mesh%coords = 1.0e150_dp*mesh%coords
-      call check_hex8_jacobians(mesh, bad, overflowing)
+      call check_element_jacobians(mesh, bad, overflowing)
       call check(error, size(bad) == 0, 'no element inverted, got '//to_string(size(bad)))
       if (allocated(error)) return
       call check(error, size(overflowing) == 2, 'both elements overflow, got '//to_string(size(overflowing)))
@@ -214,6 +214,7 @@ contains
       if (allocated(error)) return
       ! a third cube sharing the face x = 2 of the first block and x = 5 of the copy joins them
       mesh%connectivity = reshape([mesh%connectivity, [2, 13, 15, 4, 6, 17, 20, 7]], [8, 5])
+      call mesh%set_cells([mesh%element_cell, mesh%element_cell(1)])   ! a HEX8 as the others
       mesh%n_elements = 5
       call connected_components(mesh, component, n_components)
       call check(error, n_components == 1, 'one component after joining, got '//to_string(n_components))
