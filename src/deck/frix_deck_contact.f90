@@ -18,7 +18,7 @@ module frix_deck_contact
    use frix_model, only: model_t, contact_pair_t
    use frix_surface_stiffness, only: surface_stiffness
    use frix_deck_tokens, only: deck_line_t
-   use frix_deck_context, only: deck_reader_t, require, resume_position, s_contact
+   use frix_deck_context, only: deck_reader_t, require, resume_position, after_keyword, s_contact
    implicit none
    private
 
@@ -238,10 +238,7 @@ contains
          start = position
          ok = .true.
          call read_pair_option(reader, line, position, normal_specs, friction_specs, options, ok)
-         if (.not. ok) then
-            line_ok = .false.
-            position = resume_position(line, max(position, start + 1), keywords)
-         end if
+         call after_keyword(line, start, keywords, position, ok, line_ok)
       end do
       ok = line_ok
    end subroutine read_pair_options

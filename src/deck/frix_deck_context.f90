@@ -17,7 +17,7 @@ module frix_deck_context
    private
 
    public :: deck_reader_t, property_t, deck_section_names, box_tolerance, read_keyword_pairs, keyword_pair_t
-   public :: require, resume_position, read_node_dof, read_dof, mark_nodes, extend_origins, extend_properties, &
+   public :: require, resume_position, after_keyword, read_node_dof, read_dof, mark_nodes, extend_origins, extend_properties, &
              one_line, line_integer
    public :: s_problem, s_static, s_curves, s_materials, s_mesh_file, s_node_coords, s_elements, &
              s_mesh_block, s_node_sets, s_surfaces, s_dirichlet, s_neumann, s_body_force, s_steps, &
@@ -526,6 +526,21 @@ contains
          resume = resume + 1
       end do
    end function resume_position
+
+   !> After the keyword that began at token `start` of a keyword/value line was read: on a
+   !> mistake (`ok` false) the line is rejected (`line_ok` false) and `position` moves to the
+   !> line's next keyword (resume_position, at least one token on).
+   pure subroutine after_keyword(line, start, keywords, position, ok, line_ok)
+      type(deck_line_t), intent(in) :: line
+      integer, intent(in) :: start
+      character(len=*), intent(in) :: keywords(:)
+      integer, intent(inout) :: position
+      logical, intent(in) :: ok
+      logical, intent(inout) :: line_ok
+      if (ok) return
+      line_ok = .false.
+      position = resume_position(line, max(position, start + 1), keywords)
+   end subroutine after_keyword
 
    !> Report `message` at token `position` unless `condition` holds (only if still `ok`).
    subroutine require(reader, ok, condition, line, position, message)

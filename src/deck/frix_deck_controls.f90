@@ -7,7 +7,7 @@ module frix_deck_controls
    use frix_model, only: model_t, load_curve_t, step_t, curve_factor
    use frix_deck_tokens, only: deck_line_t, parse_real
    use frix_deck_context, only: deck_reader_t, read_keyword_pairs, keyword_pair_t, require, read_node_dof, &
-                                resume_position, s_problem, s_static, s_curves, s_steps
+                                resume_position, after_keyword, s_problem, s_static, s_curves, s_steps
    implicit none
    private
 
@@ -228,10 +228,7 @@ contains
                start = position
                ok = .true.
                call read_step_keyword(reader, model, line, position, number, step, ok)
-               if (.not. ok) then
-                  line_ok = .false.
-                  position = resume_position(line, max(position, start + 1), step_keywords)
-               end if
+               call after_keyword(line, start, step_keywords, position, ok, line_ok)
             end do
             ok = line_ok
             if (ok .and. step%n_increments == 0) then

@@ -3,7 +3,8 @@
 module frix_deck_loads
    use frix_kinds, only: dp
    use frix_model, only: model_t, dirichlet_t, nodal_force_t, pressure_load_t, body_force_t
-   use frix_deck_context, only: deck_reader_t, require, mark_nodes, resume_position, s_dirichlet, s_neumann, s_body_force
+   use frix_deck_context, only: deck_reader_t, require, mark_nodes, resume_position, after_keyword, &
+                                s_dirichlet, s_neumann, s_body_force
    use frix_strings, only: to_string
    implicit none
    private
@@ -174,10 +175,7 @@ contains
                      call reader%report(line, position, 'unknown keyword (expected CURVE or FOLLOWER)')
                      ok = .false.
                   end select
-                  if (.not. ok) then
-                     line_ok = .false.
-                     position = resume_position(line, max(position, start + 1), pressure_keywords)
-                  end if
+                  call after_keyword(line, start, pressure_keywords, position, ok, line_ok)
                end do
                ok = line_ok
                if (.not. ok) cycle

@@ -15,7 +15,8 @@ module frix_deck_mesh
    use frix_model, only: model_t
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, require, extend_origins, extend_properties, box_tolerance, &
-                                resume_position, s_mesh_file, s_node_coords, s_mesh_block, s_node_sets, s_surfaces
+                                resume_position, after_keyword, s_mesh_file, s_node_coords, s_mesh_block, &
+                                s_node_sets, s_surfaces
    implicit none
    private
 
@@ -193,10 +194,7 @@ contains
                   call reader%report(line, position, 'unknown keyword in MESH BLOCK')
                   ok = .false.
                end select
-               if (.not. ok) then
-                  line_ok = .false.
-                  position = resume_position(line, max(position, start + 1), block_keywords)
-               end if
+               call after_keyword(line, start, block_keywords, position, ok, line_ok)
             end do
             ok = line_ok
             if (ok .and. .not. all(has)) then

@@ -17,7 +17,7 @@ module frix_deck_properties
    use frix_mesh, only: cell_index
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, property_t, require, extend_origins, extend_properties, &
-                                one_line, line_integer, resume_position, s_materials, s_elements
+                                one_line, line_integer, after_keyword, s_materials, s_elements
    implicit none
    private
 
@@ -270,10 +270,7 @@ contains
          start = position
          ok = .true.
          call read_property_pair(reader, model, line, position, shape, candidate, has_material, ok)
-         if (.not. ok) then
-            line_ok = .false.
-            position = resume_position(line, max(position, start + 1), keywords)
-         end if
+         call after_keyword(line, start, keywords, position, ok, line_ok)
       end do
       ok = line_ok
       if (ok .and. .not. has_material) then
