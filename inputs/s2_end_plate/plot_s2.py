@@ -11,6 +11,9 @@ the run's output (frix DECK --out RUNS_DIR/BASE). Writes into OUT_DIR:
   and the seed's ~550 kN at 2 mm;
 - s2_bolt_prying.png: the bolt force (per bolt) and the prying force of the T-stub against the
   T-stub's force (coarse and fine EAS 9, and the preloaded deck);
+- s2_penalty_study.png: the seed's penalty study (its Table 6.1) on the coarse EAS 9 mesh: the
+  force against the web displacement for every penalty pair, the augmented Lagrangian and the
+  automatic penalties, with the spread of the force at 2 mm;
 and prints per run the force at 0.5, 1 and 2 mm, the plastic resistance (tangent
 intersection), the bolt and prying forces at 2 mm and the position of the prying force's
 resultant (x of the contact pressure's centroid, the flange's tip at 100 mm, the bolt at 55 mm).
@@ -30,6 +33,46 @@ import tstub_en1993 as en  # noqa: E402
 RUNS = [("s2_eas9", "coarse, EAS 9"), ("s2_eas9_fine", "fine, EAS 9"),
         ("s2_eas3", "coarse, EAS 3 (Hexa8-E3)"), ("s2_hex8", "coarse, HEX8"),
         ("s2_eas9_preload", "coarse, EAS 9, preloaded")]
+# the penalty study: (deck, label), the penalties as multiples of M / t_f (generate_s2_decks.py)
+PENALTY_RUNS = [("s2_eas9", "(1e3, 1e1) the seed's"), ("s2_eas9_n100_t100", "(1e2, 1e2)"),
+                ("s2_eas9_n1000_t100", "(1e3, 1e2)"), ("s2_eas9_n10000_t100", "(1e4, 1e2)"),
+                ("s2_eas9_n1_t0.01", "(1e0, 1e-2): the seed's / 1e3"),
+                ("s2_eas9_n0.1_t0.001", "(1e-1, 1e-3): the seed's / 1e4"),
+                ("s2_eas9_augmented", "(1e-1, 1e-3) with METHOD / TMETHOD Augmented"),
+                ("s2_eas9_autopenalty", "automatic penalties")]
+
+
+def penalty_study(runs_dir, out_dir):
+    """The force against the web displacement of the penalty decks found in runs_dir, and
+    each one's force at 2 mm against the seed's pair's (the spread the seed saw)."""
+    fig, (ax, bars) = plt.subplots(1, 2, figsize=(11, 4.5), gridspec_kw={"width_ratios": [1, 1.3]})
+    at_2mm, labels = {}, {}
+    for base, label in PENALTY_RUNS:
+        path = os.path.join(runs_dir, base, base + "_history.csv")
+        if not os.path.exists(path):
+            continue
+        u, force, _, _ = en.tstub_curve(en.read_history(path))
+        at_2mm[base], labels[base] = en.value_at(u, force, 2.0), label
+        style = "--" if "augmented" in base or "autopenalty" in base else "-"
+        ax.plot([0.0] + u, [0.0] + force, style, label=label)
+    ax.set_xlabel("web displacement (mm)")
+    ax.set_ylabel("T-stub force F (kN)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="lower right")
+    if "s2_eas9" in at_2mm:
+        names = list(at_2mm)
+        reference = at_2mm["s2_eas9"]
+        differences = [at_2mm[n] - reference for n in names]
+        bars.barh(range(len(names)), differences, color=["C%d" % i for i in range(len(names))])
+        bars.set_yticks(range(len(names)))
+        bars.set_yticklabels(["%s: %.4f kN" % (labels[n], at_2mm[n]) for n in names], fontsize=7)
+        bars.invert_yaxis()
+        bars.axvline(0.0, color="k", lw=0.6)
+        bars.set_xlabel("F(2 mm) minus the seed's pair's F(2 mm) (kN)")
+        bars.grid(alpha=0.3, axis="x")
+    fig.suptitle("S2 penalty study (coarse mesh, EAS 9): EPSN, EPST as multiples of M / t_f", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "s2_penalty_study.png"), dpi=110)
 
 
 def prying_centroid(path):
@@ -115,6 +158,7 @@ def main():
     ax2.legend(fontsize=7, loc="upper left")
     fig2.tight_layout()
     fig2.savefig(os.path.join(out_dir, "s2_bolt_prying.png"), dpi=110)
+    penalty_study(runs_dir, out_dir)
     return 0
 
 
