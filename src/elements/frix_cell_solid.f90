@@ -23,7 +23,8 @@ module frix_cell_solid
    use frix_vector_algebra, only: determinant, invert3
    use frix_reference_cell, only: reference_cell_t
    use frix_tet4_cell, only: new_tet4_cell
-   use frix_hex8, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, tensor_from_voigt
+   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
+                                    tensor_from_voigt
    implicit none
    private
 
