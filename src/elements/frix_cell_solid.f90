@@ -11,7 +11,8 @@
 !> Total Lagrangian: F = I + Grad u, E = (F^T F - I)/2, S = material(E),
 !>   fint_a = sum_g (F S) Grad N_a dV0_g, K = sum_g (B_NL^T C B_NL + (Grad N_a . S . Grad N_b) I)
 !>   dV0_g (Bathe, Finite Element Procedures, 6.2; Wriggers, Nonlinear FEM, 4.2).
-!> The kinematics, the material pass, B_NL and the Cauchy stress are frix_hex8's helpers.
+!> The kinematics, the material pass, B_NL and the Cauchy stress come from frix_solid_kinematics,
+!> shared with frix_hex8.
 !> No enhanced strains: n_enhanced = 0. The full tangent is computed (no mirroring).
 module frix_cell_solid
    use frix_kinds, only: dp
