@@ -31,7 +31,8 @@ module frix_hex8
    use frix_vector_algebra, only: determinant, invert3
    use frix_dense_algebra, only: solve_in_place
    use frix_hex8_cell, only: hex8_corner, hex8_gauss_points
-   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2
+   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
+                                    tensor_from_voigt
    implicit none
    private
 
