@@ -39,7 +39,13 @@ contains
       integer, intent(in), optional :: element_cell(:)
       integer, allocatable :: points(:)
       integer :: e, n
-      points = point_counts(size(gp, 2), size(gp, 3), element_cell)
+      ! an absent optional array is not passed on: gfortran's descriptor of it is a null pointer
+      ! that the undefined-behaviour sanitizer reports
+      if (present(element_cell)) then
+         points = point_counts(size(gp, 2), element_cell)
+      else
+         allocate (points(size(gp, 3)), source=size(gp, 2))
+      end if
       do e = 1, size(gp, 3)
          n = points(e)
          cell(:, e) = sum(gp(:, 1:n, e), dim=2)/real(n, dp)
@@ -56,7 +62,11 @@ contains
       real(dp), allocatable :: cell(:, :), element_values(:, :, :)  ! heap, not stack: meshes can be large
       integer :: e, a
       allocate (cell(size(gp, 1), size(gp, 3)), element_values(size(gp, 1), size(connectivity, 1), size(gp, 3)))
-      call cell_average(gp, cell, element_cell)
+      if (present(element_cell)) then
+         call cell_average(gp, cell, element_cell)
+      else
+         call cell_average(gp, cell)
+      end if
       do e = 1, size(gp, 3)
          do a = 1, size(connectivity, 1)
             element_values(:, a, e) = cell(:, e)
@@ -104,22 +114,20 @@ contains
       call scatter_mean(connectivity, element_values, nodal)
    end subroutine nodal_extrapolated
 
-   !> The integration points of each element: its cell's, else (no element_cell) all of gp's.
-   function point_counts(max_points, n_elements, element_cell) result(points)
-      integer, intent(in) :: max_points, n_elements
-      integer, intent(in), optional :: element_cell(:)
+   !> The integration points of each element: its cell's, at most max_points (gp's).
+   function point_counts(max_points, element_cell) result(points)
+      integer, intent(in) :: max_points
+      integer, intent(in) :: element_cell(:)   !! (n_elements) index into cell_table()
       integer, allocatable :: points(:)
       type(cell_entry_t), allocatable :: table(:)
       integer, allocatable :: cell_points(:)
       integer :: k, e
-      allocate (points(n_elements), source=max_points)
-      if (.not. present(element_cell)) return
       table = cell_table()
-      allocate (cell_points(size(table)))
+      allocate (cell_points(size(table)), points(size(element_cell)))
       do k = 1, size(table)
          cell_points(k) = size(table(k)%cell%weights)
       end do
-      do e = 1, n_elements
+      do e = 1, size(element_cell)
          points(e) = min(cell_points(element_cell(e)), max_points)
       end do
    end function point_counts

@@ -185,11 +185,12 @@ contains
             x = mesh%coords(:, mesh%face_nodes(element, face))
          end associate
          ! a quadrilateral's diagonals, a triangle's two edges from node 1
-         diagonal_1 = x(:, 3) - x(:, 1)
-         diagonal_2 = x(:, 4) - x(:, 2)
          if (size(x, 2) == 3) then
             diagonal_1 = x(:, 2) - x(:, 1)
             diagonal_2 = x(:, 3) - x(:, 1)
+         else
+            diagonal_1 = x(:, 3) - x(:, 1)
+            diagonal_2 = x(:, 4) - x(:, 2)
          end if
          normal = [diagonal_1(2)*diagonal_2(3) - diagonal_1(3)*diagonal_2(2), &
                    diagonal_1(3)*diagonal_2(1) - diagonal_1(1)*diagonal_2(3), &
