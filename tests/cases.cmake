@@ -3,6 +3,8 @@ math(EXPR scaled_60 "60 * ${FRIX_TIMEOUT_SCALE}")
 math(EXPR scaled_300 "300 * ${FRIX_TIMEOUT_SCALE}")
 math(EXPR scaled_600 "600 * ${FRIX_TIMEOUT_SCALE}")
 set(FRIX_BIN $<TARGET_FILE:frix>)
+# One deck run in a scratch folder, then its Python checker (the benchmark families).
+set(run_deck_check ${CMAKE_CURRENT_SOURCE_DIR}/harness/run_deck_check.sh)
 
 # Error cases: every tests/errors/*.dck must be rejected with the message given in its
 # `// EXPECT:` lines, without a crash.

@@ -1,6 +1,6 @@
 # S2 column flange T-stub of an extended end-plate joint on a rigid end plate
 # (docs/verification/s2.md). Included from tests/cases.cmake (FRIX_BIN defined there). Each test
-# runs one deck of inputs/s2_end_plate with run_s2.sh and checks it with check_s2.py: the web
+# runs one deck of inputs/s2_end_plate with tests/harness/run_deck_check.sh and checks it with check_s2.py: the web
 # displacement of 2 mm reached; statics at every increment (web force = bolt force - prying
 # force, 1e-6; the contact resultant normal to the plate, 1e-9); the plastic resistance
 # (tangent intersection) between EN 1993-1-8 mode 1 (Method 1) and mode 2 with the model's
@@ -13,7 +13,7 @@ set(s2_decks ${PROJECT_SOURCE_DIR}/inputs/s2_end_plate)
 # Default run: the coarse mesh (707 HEX8), EAS 9, the seed's penalties; 20 increments, about
 # 100 Newton iterations, 15-20 s on the 2-core VM (shared).
 add_test(NAME contact_s2_eas9
-         COMMAND bash ${s2_dir}/run_s2.sh ${FRIX_BIN} ${s2_decks}/s2_eas9.dck --stiffness
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s2_decks}/s2_eas9.dck ${s2_dir}/check_s2.py --stiffness
                  --reference ${s2_dir}/reference.txt)
 set_tests_properties(contact_s2_eas9 PROPERTIES LABELS "regression;contact;plasticity"
                      TIMEOUT ${scaled_300})
@@ -30,7 +30,7 @@ foreach(variant eas9_fine eas3 hex8 eas9_preload)
     set(options "--stiffness")
   endif()
   add_test(NAME contact_s2_${variant}
-           COMMAND bash ${s2_dir}/run_s2.sh ${FRIX_BIN} ${s2_decks}/s2_${variant}.dck ${options}
+           COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s2_decks}/s2_${variant}.dck ${s2_dir}/check_s2.py ${options}
                    --reference ${s2_dir}/reference.txt)
   if(variant STREQUAL "eas9_fine")
     math(EXPR timeout "900 * ${FRIX_TIMEOUT_SCALE}")   # 3.5-4.5 min alone on the loaded VM

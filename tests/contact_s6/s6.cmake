@@ -1,5 +1,5 @@
 # S6(b) pipe crossing a slope (docs/verification/s6.md). Included from tests/cases.cmake
-# (FRIX_BIN defined there). Each test runs one deck of inputs/s6_pipe_slope with run_s6.sh and
+# (FRIX_BIN defined there). Each test runs one deck of inputs/s6_pipe_slope with tests/harness/run_deck_check.sh and
 # checks it with check_s6.py: the load reached; equilibrium of the reactions with the soil's
 # weight (0.018 x the mesh's soil volume), the surcharge and the internal pressure (1e-6); the
 # elastic hoop displacement in the open span against Lame in plane strain (2 %); the history
@@ -12,7 +12,7 @@ set(s6_decks ${PROJECT_SOURCE_DIR}/inputs/s6_pipe_slope)
 # Default run: the coarse mesh (636 HEX8), mu = 0.3, steps 1 and 2 (geostatic, then 1 x in 7
 # increments): 2 s on the 2-core VM (shared).
 add_test(NAME contact_s6_mu0.3_1x
-         COMMAND bash ${s6_dir}/run_s6.sh ${FRIX_BIN} ${s6_decks}/s6_mu0.3_1x.dck --end 2
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu0.3_1x.dck ${s6_dir}/check_s6.py --end 2
                  --reference ${s6_dir}/reference.txt)
 set_tests_properties(contact_s6_mu0.3_1x PROPERTIES LABELS "regression;contact;plasticity"
                      TIMEOUT ${scaled_600})
@@ -21,7 +21,7 @@ set_tests_properties(contact_s6_mu0.3_1x PROPERTIES LABELS "regression;contact;p
 # VM): mu = 0.3, the benchmark's own, in the default run; 0.1 and 0.6 slow.
 foreach(mu 0.1 0.3 0.6)
   add_test(NAME contact_s6_mu${mu}
-           COMMAND bash ${s6_dir}/run_s6.sh ${FRIX_BIN} ${s6_decks}/s6_mu${mu}.dck --plastic
+           COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu${mu}.dck ${s6_dir}/check_s6.py --plastic
                    --reference ${s6_dir}/reference.txt)
   if(mu STREQUAL "0.3")
     set(labels "regression;contact;plasticity")
@@ -35,7 +35,7 @@ endforeach()
 # the mu = 0.1 and 0.3 runs differ by 33 mm axially, s6.md "Variants"), coarse, 10-15 s: slow.
 foreach(mu 0.1 0.3)
   add_test(NAME contact_s6_mu${mu}_free0
-           COMMAND bash ${s6_dir}/run_s6.sh ${FRIX_BIN} ${s6_decks}/s6_mu${mu}_free0.dck --plastic
+           COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu${mu}_free0.dck ${s6_dir}/check_s6.py --plastic
                    --axially-free --reference ${s6_dir}/reference.txt)
   set_tests_properties(contact_s6_mu${mu}_free0 PROPERTIES LABELS "regression;contact;plasticity;slow"
                        TIMEOUT ${scaled_600})

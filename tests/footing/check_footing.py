@@ -2,7 +2,7 @@
 """Check a strip-footing run (inputs/strip_footing, docs/verification/strip_footing.md) against
 Prandtl's limit pressure and statics.
 
-    check_footing.py HISTORY_CSV PHI_DEGREES TOLERANCE
+    check_footing.py OUT BASE PHI_DEGREES TOLERANCE     (OUT/BASE_history.csv: the run's history)
 
 - the run reached its last increment (t = 1);
 - collapse: the footing pressure q = -r3_sum_footing / (b t) changed by less than 0.5 % over
@@ -21,7 +21,8 @@ from generate_footing_decks import B_HALF, THICKNESS, COHESION, bearing_factor  
 
 
 def main():
-    path, phi, tolerance = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+    out, base, phi, tolerance = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4])
+    path = pathlib.Path(out) / f"{base}_history.csv"
     with open(path) as f:
         rows = list(csv.DictReader(f))
     times = [float(r["time"]) for r in rows]

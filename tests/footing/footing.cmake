@@ -1,16 +1,17 @@
 # Strip footing on a weightless c-phi soil against Prandtl's limit pressure
 # (docs/verification/strip_footing.md). Included from tests/cases.cmake (FRIX_BIN defined
-# there). Each test runs one deck of inputs/strip_footing with run_footing.sh and checks with
+# there). Each test runs one deck of inputs/strip_footing with tests/harness/run_deck_check.sh and checks with
 # check_footing.py: the settlement reached, a plateau of the footing pressure over the last
 # quarter (collapse), the limit pressure within the tolerance of c N_c (Prandtl), footing and
 # bottom reactions balanced to 1e-6.
 set(footing_dir ${CMAKE_CURRENT_SOURCE_DIR}/footing)
 set(footing_decks ${PROJECT_SOURCE_DIR}/inputs/strip_footing)
 
-# run_footing.sh FRIX DECK PHI TOLERANCE, one test per (deck, phi, tolerance, labels).
+# One test per (deck, phi, tolerance, labels).
 function(footing_test deck phi tolerance labels timeout)
   add_test(NAME ${deck}
-           COMMAND bash ${footing_dir}/run_footing.sh ${FRIX_BIN} ${footing_decks}/${deck}.dck ${phi} ${tolerance})
+           COMMAND bash ${run_deck_check} ${FRIX_BIN} ${footing_decks}/${deck}.dck ${footing_dir}/check_footing.py
+                   ${phi} ${tolerance})
   set_tests_properties(${deck} PROPERTIES LABELS "${labels}" TIMEOUT ${timeout})
 endfunction()
 
