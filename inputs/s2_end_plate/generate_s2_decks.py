@@ -47,10 +47,12 @@ Physical groups: 3D plate (flange and web, MAT 1), bolt (head and shank, MAT 2);
 sym_y (y = 0), bolt_end (z = -36, the nut); 0D heel (0, 0, 0) under the web, tip (100, 0, 0)
 the flange tip on the symmetry plane y = 0, tip_bolt (100, 50, 0) the tip in line with the bolt.
 """
-import io
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "meshes"))
+from gmsh22_writer import write_gmsh22  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -203,33 +205,8 @@ def number(v):
 def write_mesh(path, refine):
     """Write the mesh (only if its text changed); returns a one-line summary of its size."""
     mesh, plate, bolt, groups, points = build(refine)
-    names = [(3, "plate"), (3, "bolt")] + [(2, n) for n in groups] + [(0, n) for n, _ in points]
-    out = io.StringIO()
-    out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-    out.write("$Comments\nwritten by inputs/s2_end_plate/generate_s2_decks.py, refine %d\n"
-              "$EndComments\n" % refine)
-    out.write("$PhysicalNames\n%d\n" % len(names))
-    for tag, (dim, name) in enumerate(names, start=1):
-        out.write('%d %d "%s"\n' % (dim, tag, name))
-    out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(mesh.nodes))
-    for i, (x, y, z) in enumerate(mesh.nodes, start=1):
-        out.write("%d %s %s %s\n" % (i, number(x), number(y), number(z)))
-    out.write("$EndNodes\n")
-    rows = []
-    for tag, hexes in ((1, plate), (2, bolt)):
-        rows += ["5 2 %d %d %s" % (tag, tag, " ".join(map(str, h))) for h in hexes]
-    for tag, name in enumerate(groups, start=3):
-        rows += ["3 2 %d %d %s" % (tag, tag, " ".join(map(str, f))) for f in groups[name]]
-    for tag, (name, node) in enumerate(points, start=3 + len(groups)):
-        rows.append("15 2 %d %d %d" % (tag, tag, node))
-    out.write("$Elements\n%d\n" % len(rows))
-    for i, row in enumerate(rows, start=1):
-        out.write("%d %s\n" % (i, row))
-    out.write("$EndElements\n")
-    text = out.getvalue()
-    if not os.path.exists(path) or open(path).read() != text:
-        with open(path, "w") as f:
-            f.write(text)
+    write_gmsh22(path, "written by inputs/s2_end_plate/generate_s2_decks.py, refine %d" % refine, mesh.nodes,
+                 [("plate", plate), ("bolt", bolt)], groups, points, number)
     return "plate %d + bolt %d = %d HEX8, %d nodes" % (len(plate), len(bolt),
                                                         len(plate) + len(bolt), len(mesh.nodes))
 

@@ -71,12 +71,12 @@ pipeline's operation raises). The surcharge: the seed's "1000 N/m" read as a lin
 1e-3 MN per metre of pipe spread over the strip |x| <= a_box (0.6 wide, about 2 D) above the
 pipe over 0 <= z <= 5: q = 1e-3/0.6 = 1.6667e-3 MPa.
 """
-import io
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "meshes"))
+from gmsh22_writer import write_gmsh22  # noqa: E402
 from ring_mesh import radii  # noqa: E402  (n + 1 points from a to b, last / first size = grading)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -278,33 +278,8 @@ def build(refine):
 def write_mesh(path, refine):
     """Write the mesh (only if its text changed: a run reading it meanwhile is not disturbed)."""
     mesh, soil, pipe, surfaces, points = build(refine)
-    names = [(3, "soil"), (3, "pipe")] + [(2, n) for n in surfaces] + [(0, n) for n, _ in points]
-    out = io.StringIO()
-    out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-    out.write("$Comments\nwritten by inputs/s6_pipe_slope/generate_s6_decks.py, refine %d\n"
-              "$EndComments\n" % refine)
-    out.write("$PhysicalNames\n%d\n" % len(names))
-    for tag, (dim, name) in enumerate(names, start=1):
-        out.write('%d %d "%s"\n' % (dim, tag, name))
-    out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(mesh.nodes))
-    for i, (x, y, z) in enumerate(mesh.nodes, start=1):
-        out.write("%d %s %s %s\n" % (i, number(x), number(y), number(z)))
-    out.write("$EndNodes\n")
-    rows = []
-    for tag, hexes in ((1, soil), (2, pipe)):
-        rows += ["5 2 %d %d %s" % (tag, tag, " ".join(map(str, h))) for h in hexes]
-    for tag, name in enumerate(surfaces, start=3):
-        rows += ["3 2 %d %d %s" % (tag, tag, " ".join(map(str, f))) for f in surfaces[name]]
-    for tag, (name, node) in enumerate(points, start=3 + len(surfaces)):
-        rows.append("15 2 %d %d %d" % (tag, tag, node))
-    out.write("$Elements\n%d\n" % len(rows))
-    for i, row in enumerate(rows, start=1):
-        out.write("%d %s\n" % (i, row))
-    out.write("$EndElements\n")
-    text = out.getvalue()
-    if not os.path.exists(path) or open(path).read() != text:
-        with open(path, "w") as f:
-            f.write(text)
+    write_gmsh22(path, "written by inputs/s6_pipe_slope/generate_s6_decks.py, refine %d" % refine, mesh.nodes,
+                 [("soil", soil), ("pipe", pipe)], surfaces, points, number)
     return len(mesh.nodes), len(soil), len(pipe)
 
 
