@@ -28,8 +28,7 @@ contains
       real(dp), intent(in), optional :: step_window(2)
       integer :: i, k, a, node, e, face, equation
       real(dp) :: factor, coords(3, 4), displacement(3, 4), force(12), stiffness(12, 12)
-      real(dp) :: weights(8)
-      real(dp), allocatable :: element_coords(:, :)
+      real(dp), allocatable :: element_coords(:, :), weights(:)
       integer :: face_nodes(4)
 
       fext = 0.0_dp
@@ -84,6 +83,8 @@ contains
                      associate (element => block%element%formulation, &
                                 density => model%materials(block%material)%law%density)
                         element_coords = model%mesh%coords(:, model%mesh%element_nodes(e))
+                        if (allocated(weights)) deallocate (weights)
+                        allocate (weights(model%mesh%node_count(e)))
                         call element%volume_weights(element_coords, weights)
                         do a = 1, model%mesh%node_count(e)
                            node = model%mesh%connectivity(a, e)

@@ -10,7 +10,7 @@ module frix_cell_registry
    implicit none
    private
 
-   public :: cell_table, find_cell, cell_names, hex8_cell_index
+   public :: cell_table, find_cell, cell_names, max_cell_nodes, hex8_cell_index
 
    !> The line of HEX8 in cell_table(): a mesh built without cell types is HEX8 (frix_mesh).
    integer, parameter :: hex8_cell_index = 1
@@ -54,6 +54,17 @@ contains
          end if
       end do
    end subroutine find_cell
+
+   !> The most nodes of any known cell.
+   integer function max_cell_nodes()
+      type(cell_entry_t), allocatable :: table(:)
+      integer :: k
+      table = cell_table()
+      max_cell_nodes = 0
+      do k = 1, size(table)
+         max_cell_nodes = max(max_cell_nodes, table(k)%cell%n_nodes)
+      end do
+   end function max_cell_nodes
 
    !> The names of the known cells, blank-separated (for messages).
    function cell_names() result(names)

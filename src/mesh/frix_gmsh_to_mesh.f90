@@ -10,10 +10,11 @@ module frix_gmsh_to_mesh
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_id_map, only: id_map_t
-   use frix_mesh, only: mesh_t, cell_index
+   use frix_mesh, only: mesh_t, connectivity_rows
+   use frix_cell_registry, only: cell_entry_t, cell_table, max_cell_nodes
    use frix_mesh_checks, only: node_to_elements
    use frix_mesh_selection, only: sort_nodes
-   use frix_gmsh_context, only: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, &
+   use frix_gmsh_context, only: gmsh_quadrangle, gmsh_triangle, &
                                 is_volume_cell, raw_mesh_t
    implicit none
    private
@@ -75,12 +76,14 @@ contains
       integer, allocatable, intent(out) :: record_element(:)
       type(error_t), allocatable, intent(out) :: error
       type(id_map_t) :: element_map
-      integer, allocatable :: nodes(:), cells(:)
-      integer :: n_records, n_volume, r, element, existing, row(8)
+      integer, allocatable :: nodes(:), cells(:), row(:), cell_of_type(:)
+      integer :: n_records, n_volume, r, element, existing
+      cell_of_type = cells_of_gmsh_types()
       n_records = raw%record_ids%count
       n_volume = count([(is_volume_cell(raw%record_types%items(r)), r=1, n_records)])
-      allocate (mesh%connectivity(8, n_volume), mesh%element_ids(n_volume), record_element(n_records))
-      allocate (cells(n_volume))
+      ! rows for any cell, cut to the mesh's cells' at the end
+      allocate (mesh%connectivity(max_cell_nodes(), n_volume), mesh%element_ids(n_volume), record_element(n_records))
+      allocate (cells(n_volume), row(max_cell_nodes()))
       record_element = 0
       call element_map%clear(n_volume)
       element = 0
@@ -102,15 +105,28 @@ contains
             element = element + 1
             mesh%connectivity(:, element) = row
             mesh%element_ids(element) = raw%record_ids%items(r)
-            cells(element) = cell_index(merge('HEX8', 'TET4', raw%record_types%items(r) == gmsh_hexahedron))
+            cells(element) = cell_of_type(raw%record_types%items(r))
             record_element(r) = element
          end if
       end do
       mesh%n_elements = element
-      mesh%connectivity = mesh%connectivity(:, 1:element)
+      mesh%connectivity = mesh%connectivity(1:connectivity_rows(cells(1:element)), 1:element)
       mesh%element_ids = mesh%element_ids(1:element)
       call mesh%set_cells(cells(1:element))
    end subroutine collect_volume_elements
+
+   !> The index in the cell table of the cell of each gmsh element type code, 0 for a type
+   !> without a cell, (largest code of a cell).
+   function cells_of_gmsh_types() result(cells)
+      integer, allocatable :: cells(:)
+      type(cell_entry_t), allocatable :: table(:)
+      integer :: k
+      table = cell_table()
+      allocate (cells(maxval([(table(k)%cell%gmsh_type, k=1, size(table))])), source=0)
+      do k = 1, size(table)
+         if (table(k)%cell%gmsh_type > 0) cells(table(k)%cell%gmsh_type) = k
+      end do
+   end function cells_of_gmsh_types
 
    !> Format 2.2 writes a hexahedron once per physical volume holding it, each copy with an id
    !> of its own (gmsh 4.8): keep the first of hexahedra with identical node lists, and point
