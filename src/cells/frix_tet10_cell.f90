@@ -5,8 +5,12 @@
 !> no POS3D name. Faces: 6-node triangles (TRI6), corners first.
 !>
 !> Local node order is VTK's (= Abaqus C3D10): corners 1-4 as TET4 (frix_tet4_cell), then the
-!> mid-edge nodes 5: 1-2, 6: 2-3, 7: 3-1, 8: 1-4, 9: 2-4, 10: 3-4. gmsh's type 11 lists the
-!> last two the other way round (9: 3-4, 10: 2-4): a reader swaps them.
+!> mid-edge nodes 5: 1-2, 6: 2-3, 7: 3-1, 8: 1-4, 9: 2-4, 10: 3-4. Sources: VTK's
+!> vtkQuadraticTetra (mid-edge points 4-9 on the edges (0,1), (1,2), (2,0), (0,3), (1,3),
+!> (2,3)); Abaqus Analysis User's Guide, "Three-dimensional solid element library", and the
+!> CalculiX User's Manual, C3D10 (the same). gmsh's type 11 (Gmsh Reference Manual, "Node
+!> ordering", Tetrahedron10, and a tetrahedron meshed by gmsh 4.8.4 checked node by node)
+!> lists the last two the other way round (9: 3-4, 10: 2-4): `gmsh_nodes` swaps them.
 !> With barycentric coordinates L_1 = 1 - xi - eta - zeta, L_2 = xi, L_3 = eta, L_4 = zeta:
 !> N_a = L_a (2 L_a - 1) at corner a, N_m = 4 L_i L_j at the node m on edge i-j
 !> (Zienkiewicz & Taylor, vol. 1, 8.8.2).
@@ -21,7 +25,7 @@ module frix_tet10_cell
    implicit none
    private
 
-   public :: tet10_cell_t, new_tet10_cell
+   public :: tet10_cell_t, new_tet10_cell, tet10_gmsh_type
 
    !> Codes of the cell in VTK (VTK_QUADRATIC_TETRA) and gmsh (element type 11, nodes 9 and 10 swapped).
    integer, parameter :: tet10_vtk_type = 24, tet10_gmsh_type = 11
@@ -68,6 +72,7 @@ contains
       allocate (cell%weights(4), source=1.0_dp/24.0_dp)
       cell%vtk_type = tet10_vtk_type
       cell%gmsh_type = tet10_gmsh_type
+      cell%gmsh_nodes = [1, 2, 3, 4, 5, 6, 7, 8, 10, 9]
       cell%pos3d_name = ''
    end function new_tet10_cell
 

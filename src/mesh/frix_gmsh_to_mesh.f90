@@ -1,8 +1,9 @@
 !> The content of a gmsh .msh file (`raw_mesh_t`, read by frix_gmsh_reader) made a `mesh_t`:
-!> the nodes (ids unique), the volume elements (8-node hexahedra, HEX8, and 4-node tetrahedra,
-!> TET4) in file order (an element that format 2.2 writes once per physical volume kept once),
+!> the nodes (ids unique), the volume elements (8-node hexahedra, HEX8, 4-node tetrahedra, TET4,
+!> and 10-node tetrahedra, TET10, their nodes put in the cell's order) in file order (an
+!> element that format 2.2 writes once per physical volume kept once),
 !> and one node set per physical group, one element set per physical volume and one surface
-!> per physical surface (each quadrilateral or triangle matched to the boundary face of a
+!> per physical surface (each quadrilateral or 3- or 6-node triangle matched to the boundary face of a
 !> volume element with the same nodes). Sets are in
 !> ascending (dim, tag) order and named from `$PhysicalNames`, else "<dim>:<tag>". Errors
 !> name the file and the line of the element or node concerned.
@@ -14,8 +15,7 @@ module frix_gmsh_to_mesh
    use frix_cell_registry, only: cell_entry_t, cell_table, max_cell_nodes
    use frix_mesh_checks, only: node_to_elements
    use frix_mesh_selection, only: sort_nodes
-   use frix_gmsh_context, only: gmsh_quadrangle, gmsh_triangle, &
-                                is_volume_cell, raw_mesh_t
+   use frix_gmsh_context, only: is_volume_cell, is_surface_cell, raw_mesh_t
    implicit none
    private
 
@@ -76,8 +76,10 @@ contains
       integer, allocatable, intent(out) :: record_element(:)
       type(error_t), allocatable, intent(out) :: error
       type(id_map_t) :: element_map
+      type(cell_entry_t), allocatable :: table(:)
       integer, allocatable :: nodes(:), cells(:), row(:), cell_of_type(:)
-      integer :: n_records, n_volume, r, element, existing
+      integer :: n_records, n_volume, r, element, existing, cell
+      table = cell_table()
       cell_of_type = cells_of_gmsh_types()
       n_records = raw%record_ids%count
       n_volume = count([(is_volume_cell(raw%record_types%items(r)), r=1, n_records)])
@@ -91,6 +93,9 @@ contains
          if (.not. is_volume_cell(raw%record_types%items(r))) cycle
          call record_nodes(file_name, raw, r, node_map, nodes, error)
          if (allocated(error)) return
+         cell = cell_of_type(raw%record_types%items(r))
+         ! gmsh's node order made the cell's (frix_tet10_cell: TET10's nodes 9 and 10)
+         if (allocated(table(cell)%cell%gmsh_nodes)) nodes = nodes(table(cell)%cell%gmsh_nodes)
          row = 0
          row(1:size(nodes)) = nodes
          call element_map%insert(raw%record_ids%items(r), element + 1, existing)
@@ -105,7 +110,7 @@ contains
             element = element + 1
             mesh%connectivity(:, element) = row
             mesh%element_ids(element) = raw%record_ids%items(r)
-            cells(element) = cell_of_type(raw%record_types%items(r))
+            cells(element) = cell
             record_element(r) = element
          end if
       end do
@@ -213,15 +218,15 @@ contains
                if (raw%group_dims%items(raw%record_groups%items(k)) /= dim) cycle
                associate (element_type => raw%record_types%items(r), id => raw%record_ids%items(r))
                   if (dim == 3 .and. .not. is_volume_cell(element_type)) then
-                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra (type 5) and 4-node '// &
-                                         'tetrahedra (type 4) are supported: element '// &
-                                         to_string(id)//' has type '//to_string(element_type))
+                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra (type 5), 4-node '// &
+                                         'tetrahedra (type 4) and 10-node tetrahedra (type 11) are supported: '// &
+                                         'element '//to_string(id)//' has type '//to_string(element_type))
                      return
                   end if
-                  if (dim == 2 .and. element_type /= gmsh_quadrangle .and. element_type /= gmsh_triangle) then
-                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals (type 3) and 3-node '// &
-                                         'triangles (type 2) are supported on surfaces: element '//to_string(id)// &
-                                         ' has type '//to_string(element_type))
+                  if (dim == 2 .and. .not. is_surface_cell(element_type)) then
+                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals (type 3), 3-node '// &
+                                         'triangles (type 2) and 6-node triangles (type 9) are supported on '// &
+                                         'surfaces: element '//to_string(id)//' has type '//to_string(element_type))
                      return
                   end if
                end associate
