@@ -11,7 +11,7 @@ module frix_cell_registry
    implicit none
    private
 
-   public :: cell_table, find_cell, cell_names, max_cell_nodes, hex8_cell_index
+   public :: cell_table, find_cell, find_in_table, cell_names, max_cell_nodes, hex8_cell_index
 
    !> The line of HEX8 in cell_table(): a mesh built without cell types is HEX8 (frix_mesh).
    integer, parameter :: hex8_cell_index = 1
@@ -56,6 +56,17 @@ contains
          end if
       end do
    end subroutine find_cell
+
+   !> The line of the cell called `name` in `table` (a cell_table()), 0 if none.
+   pure integer function find_in_table(table, name) result(index_found)
+      type(cell_entry_t), intent(in) :: table(:)
+      character(len=*), intent(in) :: name
+      integer :: k
+      index_found = 0
+      do k = 1, size(table)
+         if (table(k)%cell%name == name) index_found = k
+      end do
+   end function find_in_table
 
    !> The most nodes of any known cell.
    integer function max_cell_nodes()

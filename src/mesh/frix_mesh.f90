@@ -13,7 +13,7 @@ module frix_mesh
    use frix_kinds, only: dp
    use frix_hex8_cell, only: hex8_face_nodes
    use frix_reference_cell, only: reference_cell_t
-   use frix_cell_registry, only: cell_entry_t, cell_table, hex8_cell_index
+   use frix_cell_registry, only: cell_entry_t, cell_table, find_in_table, hex8_cell_index
    implicit none
    private
 
@@ -71,13 +71,7 @@ contains
    !> The index of the cell `name` in the cell registry's table (0 if none).
    integer function cell_index(name)
       character(len=*), intent(in) :: name
-      type(cell_entry_t), allocatable :: table(:)
-      integer :: k
-      table = cell_table()
-      cell_index = 0
-      do k = 1, size(table)
-         if (table(k)%cell%name == name) cell_index = k
-      end do
+      cell_index = find_in_table(cell_table(), name)
    end function cell_index
 
    !> Rows of the connectivity of a mesh whose elements have the cells `element_cell` (indices

@@ -21,3 +21,7 @@ add_test(NAME tet10_cantilever COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_D
 add_test(NAME restart_tet10 COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
          ${CMAKE_CURRENT_SOURCE_DIR}/tet4/restart_tet10.dck 1.2 1.3)
 set_tests_properties(tet10_patch tet10_cantilever restart_tet10 PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# Pressure on tetrahedron faces (TRI3 of TET4, TRI6 of TET10; dead and follower): the clamp's
+# reactions sum to p A, and the uniaxial state of nu = 0 is exact (run_pressure.py).
+add_test(NAME tet_pressure COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/tet4/run_pressure.py ${FRIX_BIN})
+set_tests_properties(tet_pressure PROPERTIES LABELS regression TIMEOUT ${scaled_60})
