@@ -13,7 +13,7 @@
 !> lists the last two the other way round (9: 3-4, 10: 2-4): `gmsh_nodes` swaps them.
 !> With barycentric coordinates L_1 = 1 - xi - eta - zeta, L_2 = xi, L_3 = eta, L_4 = zeta:
 !> N_a = L_a (2 L_a - 1) at corner a, N_m = 4 L_i L_j at the node m on edge i-j
-!> (Zienkiewicz & Taylor, vol. 1, 8.8.2).
+!> (Zienkiewicz & Taylor, vol. 1, 8.8.2; frix_quadratic_simplex).
 !> Local faces (TRI6: corners counter-clockwise seen from outside, then the mid-edge nodes of
 !> their edges 1-2, 2-3, 3-1), in the order of Abaqus' S1-S4 as TET4's:
 !>   1: (1 3 2 7 6 5)   2: (1 2 4 5 9 8)   3: (2 3 4 6 10 9)   4: (3 1 4 7 8 10)
@@ -22,6 +22,7 @@
 module frix_tet10_cell
    use frix_kinds, only: dp
    use frix_reference_cell, only: reference_cell_t
+   use frix_quadratic_simplex, only: quadratic_simplex_shape
    implicit none
    private
 
@@ -87,19 +88,8 @@ contains
       real(dp), intent(in) :: xi(:)
       real(dp), intent(out) :: values(:)
       real(dp), intent(out) :: derivatives(:, :)
-      real(dp) :: l(4)
-      integer :: a, m, i, j
-      l = barycentric(xi)
-      do a = 1, 4
-         values(a) = l(a)*(2.0_dp*l(a) - 1.0_dp)
-         derivatives(1:3, a) = (4.0_dp*l(a) - 1.0_dp)*barycentric_gradient(:, a)
-      end do
-      do m = 5, 10
-         i = edge_corners(1, m)
-         j = edge_corners(2, m)
-         values(m) = 4.0_dp*l(i)*l(j)
-         derivatives(1:3, m) = 4.0_dp*(l(j)*barycentric_gradient(:, i) + l(i)*barycentric_gradient(:, j))
-      end do
+      call quadratic_simplex_shape(barycentric(xi), barycentric_gradient, edge_corners, values(1:10), &
+                                   derivatives(1:3, 1:10))
    end subroutine tet10_shape_functions
 
    !> E(a, g) = (L_g(x_a) - b) / (a - b): the linear field through the 4 point values.

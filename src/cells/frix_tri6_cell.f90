@@ -6,13 +6,15 @@
 !> Node order (VTK's = gmsh's = Abaqus'): corners (0,0), (1,0), (0,1) counter-clockwise, then
 !> the mid-edge nodes 4: 1-2, 5: 2-3, 6: 3-1. Its edges are 3-node lines (corners, then middle).
 !> With L_1 = 1 - xi - eta, L_2 = xi, L_3 = eta: N_a = L_a (2 L_a - 1) at corner a,
-!> N_m = 4 L_i L_j at the node m on edge i-j (Zienkiewicz & Taylor, vol. 1, 8.8.1).
+!> N_m = 4 L_i L_j at the node m on edge i-j (Zienkiewicz & Taylor, vol. 1, 8.8.1;
+!> frix_quadratic_simplex).
 !> Extrapolation to the nodes: the linear field through the 3 point values (point g beside
 !> corner g, L_g = 2/3 there, 1/6 at the others): E(a, g) = 2 L_g(x_a) - 1/3.
 module frix_tri6_cell
    use frix_kinds, only: dp
    use frix_reference_cell, only: reference_cell_t
    use frix_tri3_cell, only: tri3_points
+   use frix_quadratic_simplex, only: quadratic_simplex_shape
    implicit none
    private
 
@@ -71,19 +73,8 @@ contains
       real(dp), intent(in) :: xi(:)
       real(dp), intent(out) :: values(:)
       real(dp), intent(out) :: derivatives(:, :)
-      real(dp) :: l(3)
-      integer :: a, m, i, j
-      l = barycentric(xi)
-      do a = 1, 3
-         values(a) = l(a)*(2.0_dp*l(a) - 1.0_dp)
-         derivatives(1:2, a) = (4.0_dp*l(a) - 1.0_dp)*barycentric_gradient(:, a)
-      end do
-      do m = 4, 6
-         i = edge_corners(1, m)
-         j = edge_corners(2, m)
-         values(m) = 4.0_dp*l(i)*l(j)
-         derivatives(1:2, m) = 4.0_dp*(l(j)*barycentric_gradient(:, i) + l(i)*barycentric_gradient(:, j))
-      end do
+      call quadratic_simplex_shape(barycentric(xi), barycentric_gradient, edge_corners, values(1:6), &
+                                   derivatives(1:2, 1:6))
    end subroutine tri6_shape_functions
 
    !> E(a, g) = 2 L_g(x_a) - 1/3: the linear field through the 3 point values.
