@@ -26,7 +26,9 @@ contains
               new_unittest('is_symmetric_detects_asymmetry', test_is_symmetric), &
               new_unittest('pattern_errors', test_pattern_errors), &
               new_unittest('add_element_outside_pattern', test_add_outside_pattern), &
-              new_unittest('pattern_id_changes', test_pattern_id) &
+              new_unittest('pattern_id_changes', test_pattern_id), &
+              new_unittest('mirror_positions_transpose', test_mirror_positions), &
+              new_unittest('move_equation_matches_dense', test_move_equation) &
               ]
    end subroutine collect_sparse_matrix
 
@@ -34,20 +36,25 @@ contains
    !> others see the 8 nodes of their element. Sum of degrees 4*12 + 8*8 = 112, nnz = 9*112.
    subroutine test_two_element_pattern_counts(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
+      integer(i4), pointer, contiguous :: node_ptr(:), node_adj(:)
       integer, allocatable :: connectivity(:, :)
       integer :: n_nodes, a, degree, shared
       call cube_connectivity(2, 1, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
+      call matrix%csc_arrays(col_ptr, row_index, values)
+      call matrix%node_graph(node_ptr, node_adj)
       call check(error, matrix%n == 36, 'n = 3 * 12 nodes')
       if (allocated(error)) return
       call check(error, matrix%nnz() == 1008_i8, 'nnz = 9 * (4*12 + 8*8) = 1008')
       if (allocated(error)) return
-      call check(error, matrix%col_ptr(matrix%n) == 1008, 'col_ptr(n) = nnz')
+      call check(error, col_ptr(matrix%n) == 1008, 'col_ptr(n) = nnz')
       if (allocated(error)) return
       shared = 0
       do a = 1, n_nodes
-         degree = matrix%node_ptr(a + 1) - matrix%node_ptr(a)
+         degree = node_ptr(a + 1) - node_ptr(a)
          if (degree == 12) shared = shared + 1
          call check(error, degree == 12 .or. degree == 8, 'degree is 8 or 12')
          if (allocated(error)) return
@@ -55,7 +62,7 @@ contains
       call check(error, shared == 4, 'four nodes on the shared face have degree 12')
       if (allocated(error)) return
       ! the shared face nodes are i = 1 of the 3 x 2 x 2 grid: 2, 5, 8, 11
-      call check(error, all(matrix%node_ptr([3, 6, 9, 12]) - matrix%node_ptr([2, 5, 8, 11]) == 12), &
+      call check(error, all(node_ptr([3, 6, 9, 12]) - node_ptr([2, 5, 8, 11]) == 12), &
                  'shared nodes 2, 5, 8, 11 have degree 12')
    end subroutine test_two_element_pattern_counts
 
@@ -64,28 +71,33 @@ contains
    !> row 3(b-1)+j-1 (0-based); rows strictly increase inside every column.
    subroutine test_position_formula(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
+      integer(i4), pointer, contiguous :: node_ptr(:), node_adj(:)
       integer, allocatable :: connectivity(:, :)
       integer :: n_nodes, a, b, k, i, j, degree, p, column
       call cube_connectivity(2, 2, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity, extra_pairs=reshape([1, 18], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
+      call matrix%node_graph(node_ptr, node_adj)
       do a = 1, n_nodes
-         degree = matrix%node_ptr(a + 1) - matrix%node_ptr(a)
+         degree = node_ptr(a + 1) - node_ptr(a)
          do i = 1, 3
             column = 3*(a - 1) + i
-            call check(error, matrix%col_ptr(column - 1) == 9*(matrix%node_ptr(a) - 1) + 3*degree*(i - 1), &
+            call check(error, col_ptr(column - 1) == 9*(node_ptr(a) - 1) + 3*degree*(i - 1), &
                        'col_ptr formula')
             if (allocated(error)) return
             do k = 1, degree
-               b = matrix%node_adj(matrix%node_ptr(a) + k - 1)
+               b = node_adj(node_ptr(a) + k - 1)
                call check(error, matrix%neighbour_index(a, b) == k, 'neighbour_index finds k')
                if (allocated(error)) return
                do j = 1, 3
-                  p = 9*(matrix%node_ptr(a) - 1) + 3*degree*(i - 1) + 3*(k - 1) + (j - 1)
-                  call check(error, p >= matrix%col_ptr(column - 1) .and. p < matrix%col_ptr(column), &
+                  p = 9*(node_ptr(a) - 1) + 3*degree*(i - 1) + 3*(k - 1) + (j - 1)
+                  call check(error, p >= col_ptr(column - 1) .and. p < col_ptr(column), &
                              'position inside its column')
                   if (allocated(error)) return
-                  call check(error, matrix%row_index(p + 1) == 3*(b - 1) + j - 1, 'row index at position')
+                  call check(error, row_index(p + 1) == 3*(b - 1) + j - 1, 'row index at position')
                   if (allocated(error)) return
                   call check(error, matrix%entry_position(a, k, i, j) == p + 1, 'entry_position = p + 1')
                   if (allocated(error)) return
@@ -94,8 +106,8 @@ contains
          end do
       end do
       do column = 1, matrix%n
-         do p = int(matrix%col_ptr(column - 1)) + 2, int(matrix%col_ptr(column))
-            call check(error, matrix%row_index(p) > matrix%row_index(p - 1), 'rows sorted in every column')
+         do p = int(col_ptr(column - 1)) + 2, int(col_ptr(column))
+            call check(error, row_index(p) > row_index(p - 1), 'rows sorted in every column')
             if (allocated(error)) return
          end do
       end do
@@ -105,7 +117,9 @@ contains
    !> dense assembly (same additions in the same order), including 0 outside the pattern.
    subroutine test_add_element_reads_back(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
       integer, allocatable :: connectivity(:, :)
       real(dp), allocatable :: dense(:, :)
       real(dp) :: block(24, 24)
@@ -113,6 +127,7 @@ contains
       integer :: n_nodes, e, row, column
       call cube_connectivity(2, 1, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
+      call matrix%csc_arrays(col_ptr, row_index, values)
       allocate (dense(matrix%n, matrix%n), source=0.0_dp)
       state = 12345
       do e = 1, size(connectivity, 2)
@@ -133,7 +148,7 @@ contains
       call check(error, count(dense /= 0.0_dp) == 1008, 'the random blocks fill the whole pattern')
       if (allocated(error)) return
       call matrix%zero()
-      call check(error, all(matrix%values == 0.0_dp), 'zero() clears the values')
+      call check(error, all(values == 0.0_dp), 'zero() clears the values')
    end subroutine test_add_element_reads_back
 
    !> Extra pair (1, 3) couples two nodes of different elements: 2 new 3x3 blocks (18 entries).
@@ -305,19 +320,109 @@ contains
 
    subroutine test_pattern_id(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
       integer :: first
       call matrix%create_node_block_pattern(2, reshape([1, 2], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
       first = matrix%pattern_id
       call check(error, first > 0, 'pattern_id positive after a build')
       if (allocated(error)) return
-      matrix%values = 1.0_dp
+      values = 1.0_dp
       call matrix%create_node_block_pattern(2, reshape([1, 2], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
       call check(error, matrix%pattern_id /= first, 'rebuilding the same pattern changes pattern_id')
       if (allocated(error)) return
-      call check(error, all(matrix%values == 0.0_dp), 'a rebuild reusing the storage zeroes the values')
+      call check(error, all(values == 0.0_dp), 'a rebuild reusing the storage zeroes the values')
       if (allocated(error)) return
       call check(error, matrix%memory_bytes() == 8_i8*36 + 8_i8*36 + 8_i8*7 + 4_i8*3 + 4_i8*4, &
                  'memory_bytes = values + row_index + col_ptr + node_ptr + node_adj')
    end subroutine test_pattern_id
+
+   !> On an unsymmetric assembly of 2 x 2 x 1 HEX8 (with an extra pair): the entry at the
+   !> mirror position of every stored entry (row r, column c) is A(c, r) (dense reference),
+   !> and the mirror of the mirror is the position itself.
+   subroutine test_mirror_positions(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
+      integer, allocatable :: connectivity(:, :), mirror(:)
+      real(dp), allocatable :: dense(:, :)
+      real(dp) :: block(24, 24)
+      integer(i8) :: state
+      integer :: n_nodes, e, column, p, row
+      call cube_connectivity(2, 2, 1, connectivity, n_nodes)
+      call matrix%create_node_block_pattern(n_nodes, connectivity, extra_pairs=reshape([1, 18], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
+      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
+      state = 4242
+      do e = 1, size(connectivity, 2)
+         call unsymmetric_block(state, block)
+         call matrix%add_element(connectivity(:, e), block, error)
+         if (allocated(error)) return
+         call dense_add(dense, connectivity(:, e), block)
+      end do
+      call matrix%mirror_positions(mirror)
+      call check(error, size(mirror) == size(values), 'one mirror per stored entry')
+      if (allocated(error)) return
+      do column = 1, matrix%n
+         do p = int(col_ptr(column - 1)) + 1, int(col_ptr(column))
+            row = int(row_index(p)) + 1
+            call check(error, values(mirror(p)) == dense(column, row), 'values(mirror(p)) = A(c, r)')
+            if (allocated(error)) return
+            call check(error, mirror(mirror(p)) == p, 'the mirror of the mirror is p')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_mirror_positions
+
+   !> move_equation against the dense elimination: row e times w added to the master rows and
+   !> zeroed, then the same for the column (u_e = 0.5 u_m1 + 0.25 u_m2); a master outside the
+   !> pattern is reported as the missing pair (master node, other node).
+   subroutine test_move_equation(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(sparse_matrix_t) :: matrix
+      integer, allocatable :: connectivity(:, :)
+      real(dp), allocatable :: dense(:, :)
+      real(dp) :: block(24, 24), weights(2)
+      integer(i8) :: state
+      integer :: n_nodes, e, row, column, masters(2), missing(2), dependent
+      call cube_connectivity(2, 1, 1, connectivity, n_nodes)
+      call matrix%create_node_block_pattern(n_nodes, connectivity)
+      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
+      state = 777
+      do e = 1, size(connectivity, 2)
+         call unsymmetric_block(state, block)
+         call matrix%add_element(connectivity(:, e), block, error)
+         if (allocated(error)) return
+         call dense_add(dense, connectivity(:, e), block)
+      end do
+      ! nodes 2, 5 and 8 lie on the shared face (coupled to every node); equation 3*(2-1)+2
+      ! depends on equations 3*(5-1)+1 (node 5, x) and 3*(8-1)+3 (node 8, z)
+      dependent = 5
+      masters = [13, 24]
+      weights = [0.5_dp, 0.25_dp]
+      call matrix%move_equation(dependent, masters, weights, .true., missing)
+      call check(error, all(missing == 0), 'no pair missing')
+      if (allocated(error)) return
+      dense(masters(1), :) = dense(masters(1), :) + weights(1)*dense(dependent, :)
+      dense(masters(2), :) = dense(masters(2), :) + weights(2)*dense(dependent, :)
+      dense(dependent, :) = 0.0_dp
+      call matrix%move_equation(dependent, masters, weights, .false., missing)
+      dense(:, masters(1)) = dense(:, masters(1)) + weights(1)*dense(:, dependent)
+      dense(:, masters(2)) = dense(:, masters(2)) + weights(2)*dense(:, dependent)
+      dense(:, dependent) = 0.0_dp
+      do column = 1, matrix%n
+         do row = 1, matrix%n
+            call check_close(error, matrix%entry(row, column), dense(row, column), 1.0e-14_dp, &
+                             abs_tol=1.0e-14_dp, message='entry equals the dense elimination')
+            if (allocated(error)) return
+         end do
+      end do
+      ! node 1 and node 3 share no element: moving node 1's x onto node 3's x lacks (3, n)
+      call matrix%move_equation(1, [7], [1.0_dp], .true., missing)
+      call check(error, missing(1) == 3 .and. missing(2) > 0, 'missing pair reported with the master node')
+   end subroutine test_move_equation
 end module test_sparse_matrix
