@@ -25,3 +25,7 @@ set_tests_properties(tet10_patch tet10_cantilever restart_tet10 PROPERTIES LABEL
 # reactions sum to p A, and the uniaxial state of nu = 0 is exact (run_pressure.py).
 add_test(NAME tet_pressure COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/tet4/run_pressure.py ${FRIX_BIN})
 set_tests_properties(tet_pressure PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# A TET10 on a deck element line (10 node ids): frix --check names its block's cell.
+add_test(NAME check_summary_tet10 COMMAND ${FRIX_BIN} --check ${CMAKE_CURRENT_SOURCE_DIR}/tet4/inline10.dck)
+set_tests_properties(check_summary_tet10 PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION
+  "block 1: 1 elements TET10 \\(Geo_Lin\\) on TET10 cells, material 1 MAT_Struct_LinearElastic")
