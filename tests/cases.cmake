@@ -275,3 +275,5 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/eas_thin/eas_thin.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/soil/soil.cmake)
 # The strip footing against Prandtl (tests/footing).
 include(${CMAKE_CURRENT_SOURCE_DIR}/footing/footing.cmake)
+# SOLVER Petsc (tests/solver/petsc.cmake).
+include(${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc.cmake)
