@@ -8,7 +8,9 @@
 !> handed to PETSc as a sequential AIJ matrix in compressed rows: the same index arrays read
 !> as rows describe A^T (the pattern is structurally symmetric), so the values are gathered
 !> through the mirror positions (`mirror_positions`) into an array PETSc uses in place
-!> (MatCreateSeqAIJWithArrays). One process; the distribution over MPI processes is not
+!> (MatCreateSeqAIJWithArrays), with block size 3 and the six rigid-body modes of the nodes'
+!> positions as its near-null space (MatNullSpaceCreateRigidBody: what GAMG needs for
+!> elasticity, PETSc manual, PCGAMG). One process; the distribution over MPI processes is not
 !> done yet.
 !>
 !> Built with PETSc only when CMake's FRIX_PETSC is ON (compile definition FRIX_WITH_PETSC);
@@ -50,6 +52,7 @@ module frix_petsc_solver
       PetscInt, allocatable, private :: columns(:)  !! 0-based column of every entry
       PetscScalar, allocatable, private :: row_values(:)  !! A in compressed rows
       integer, allocatable, private :: mirror(:)   !! CSC position of each compressed-row entry
+      PetscScalar, allocatable, private :: coords(:)  !! (3 n_nodes) node positions, x y z per node
 #endif
    contains
       procedure :: name
@@ -57,6 +60,9 @@ module frix_petsc_solver
       procedure :: solve
       procedure :: release
       procedure :: description
+#ifdef FRIX_WITH_PETSC
+      procedure :: set_node_coordinates
+#endif
    end type petsc_solver_t
 
 contains
@@ -138,6 +144,10 @@ contains
          call MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, int(matrix%n, kind(solver%row_ptr)), &
                                         int(matrix%n, kind(solver%row_ptr)), solver%row_ptr, solver%columns, &
                                         solver%row_values, solver%a, ierr)
+         if (ierr == 0) call MatSetBlockSize(solver%a, 3, ierr)
+         if (ierr == 0 .and. allocated(solver%coords)) then
+            if (size(solver%coords) == matrix%n) call set_rigid_body_modes(solver, ierr)
+         end if
          if (ierr == 0) call KSPCreate(PETSC_COMM_SELF, solver%ksp, ierr)
          if (ierr == 0) call KSPSetOperators(solver%ksp, solver%a, solver%a, ierr)
          if (ierr == 0) call KSPSetType(solver%ksp, KSPPREONLY, ierr)
@@ -170,6 +180,26 @@ contains
       end if
       solver%factorized_pattern_id = matrix%pattern_id
    end subroutine factorize
+
+   subroutine set_node_coordinates(solver, coords)
+      class(petsc_solver_t), intent(inout) :: solver
+      real(dp), intent(in) :: coords(:, :)   !! (3, n_nodes)
+      solver%coords = reshape(coords, [size(coords)])
+   end subroutine set_node_coordinates
+
+   !> The near-null space of the matrix: the rigid-body modes of the nodes' positions.
+   subroutine set_rigid_body_modes(solver, ierr)
+      class(petsc_solver_t), intent(inout) :: solver
+      PetscErrorCode, intent(out) :: ierr
+      type(tVec) :: positions
+      type(tMatNullSpace) :: modes
+      call VecCreateSeqWithArray(PETSC_COMM_SELF, 3, int(size(solver%coords), kind(solver%row_ptr)), &
+                                 solver%coords, positions, ierr)
+      if (ierr == 0) call MatNullSpaceCreateRigidBody(positions, modes, ierr)
+      if (ierr == 0) call MatSetNearNullSpace(solver%a, modes, ierr)
+      if (ierr == 0) call MatNullSpaceDestroy(modes, ierr)
+      if (ierr == 0) call VecDestroy(positions, ierr)
+   end subroutine set_rigid_body_modes
 
    !> KSPSolve on vectors that wrap rhs and x; an error when the KSP did not converge.
    subroutine solve(solver, matrix, rhs, x, error)
