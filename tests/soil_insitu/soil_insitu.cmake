@@ -1,0 +1,15 @@
+# The initial (in-situ) stress (INITIAL STRESS, docs/verification/soil_insitu.md): a soil block
+# under gravity with its geostatic stress stays put (u = 0, no Newton iteration, stresses and
+# reactions of the closed form), then takes a surcharge by the oedometric closed form: elastic
+# HEX8, Mohr-Coulomb HEX8-EAS9, two layers tied, two layers in augmented contact. Restarts of
+# the Mohr-Coulomb and contact decks inside both steps end bit for bit where the full runs end.
+foreach(deck insitu_elastic insitu_mohr_coulomb insitu_layers insitu_layers_contact)
+  add_test(NAME soil_insitu_${deck} COMMAND bash ${run_deck_check} ${FRIX_BIN}
+           ${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/${deck}.dck ${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/check_insitu.py)
+  set_tests_properties(soil_insitu_${deck} PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
+endforeach()
+foreach(deck insitu_mohr_coulomb insitu_layers_contact)
+  add_test(NAME restart_${deck} COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+           ${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/${deck}.dck 1.1 1.2 2.1)
+  set_tests_properties(restart_${deck} PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
+endforeach()
