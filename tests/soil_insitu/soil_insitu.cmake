@@ -13,3 +13,7 @@ foreach(deck insitu_mohr_coulomb insitu_layers_contact)
            ${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/${deck}.dck 1.1 1.2 2.1)
   set_tests_properties(restart_${deck} PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
 endforeach()
+# frix --check lists the initial stress (docs/deck-format.md, "Checking a deck").
+add_test(NAME check_summary_insitu COMMAND ${FRIX_BIN} --check ${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/insitu_layers.dck)
+set_tests_properties(check_summary_insitu PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION
+                     "body forces.*initial stress: 2 lines, on 16 elements.*steps: 2")
