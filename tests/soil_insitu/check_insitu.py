@@ -1,7 +1,6 @@
 #!/usr/bin/python3
 """check_insitu.py OUT BASE: the results of a soil block with a geostatic initial stress
-(insitu_elastic.dck, insitu_mohr_coulomb.dck, insitu_layers.dck; their headers give the
-problems) against the closed forms, from the HDF5 file, the VTK files, the history CSV and the
+(the decks of tests/soil_insitu; their headers give the problems) against the closed forms, from the HDF5 file, the VTK files, the history CSV and the
 listing in OUT (written by run_deck_check.sh).
 
 Step 1 (gravity and the initial stress, no other load): the displacements vanish to 1e-12 of
@@ -15,7 +14,9 @@ Step 2 (RESET_DISPLACEMENT, a surcharge p f(t) on the top): the oedometric close
 the initial stress, d sigma_zz = -p f, d sigma_xx = d sigma_yy = -nu / (1 - nu) p f, and the
 reported displacement u_z(z) = -p f int_0^z dz / M(z) (u_x = u_y = 0), the reaction the weight
 plus p f A. A Mohr-Coulomb soil stays elastic (REGION 0 everywhere): its stress ratio moves
-from K0 = 1 - sin(phi) towards nu / (1 - nu), inside (K_a, K_p)."""
+from K0 = 1 - sin(phi) towards nu / (1 - nu), inside (K_a, K_p); insitu_mohr_coulomb_active
+goes past K_a: its step 2 is checked on the Mohr-Coulomb edge instead (check_active), with the
+elements' mean sigma_zz against the closed form."""
 import math
 import re
 import sys
@@ -42,6 +43,9 @@ CASES = {
     'insitu_layers': dict(layers=[(2.0, 18.0, 0.5, 20000.0, 0.3), (0.0, 20.0, 0.6, 40000.0, 0.25)],
                           top=4.0, area=4.0, p=50.0, plastic=False, bottom='lower'),
 }
+# the active limit: step 2 checked on the Mohr-Coulomb edge (c, phi) instead of the elastic closed form
+CASES['insitu_mohr_coulomb_active'] = dict(layers=[(0.0, 18.0, 0.5, 20000.0, 0.1)], top=4.0, area=4.0, p=200.0,
+                                           plastic=True, active=(1.0, math.radians(30.0)))
 # augmented contact between the layers: penetrations within PENTOL, augmentations in step 1
 CASES['insitu_layers_contact'] = dict(CASES['insitu_layers'], pentol=1e-9)
 
@@ -73,6 +77,24 @@ def expected_uz(case, z, load):
         span = max(0.0, min(z, top) - bottom)
         total += span / oedometric(young, nu)
     return -load * total
+
+
+def check_active(case, stress, region, centres, load, scale, label, check):
+    """Mohr-Coulomb from K0 under the oedometric surcharge: horizontal stresses equal, no
+    shear, the yielded points on the edge sigma_h = K_a sigma_zz + 2 c sqrt(K_a) (REGION 2), and
+    every point yielded at the end of the step."""
+    cohesion, phi = case['active']
+    k_a = (1.0 - math.sin(phi)) / (1.0 + math.sin(phi))
+    error = max(np.abs(stress[:, :, 0] - stress[:, :, 1]).max(), np.abs(stress[:, :, 3:]).max()) / scale
+    check(error <= 1e-10, f'{label}: sigma_xx = sigma_yy and no shear, max error {error:.2e}')
+    plastic = region > 0
+    line = k_a * stress[:, :, 2] + 2.0 * cohesion * math.sqrt(k_a)
+    error = np.abs(stress[:, :, 0] - line)[plastic].max() / scale if plastic.any() else 0.0
+    check(plastic.any() and np.all(region[plastic] == 2) and error <= 1e-10,
+          f'{label}: {plastic.sum()} of {plastic.size} points yielded, all on the edge (REGION 2) at '
+          f'sigma_h = K_a sigma_zz + 2 c sqrt(K_a), max error {error:.2e}')
+    if load == case['p']:
+        check(plastic.all(), f'{label}: every point yielded at the full surcharge')
 
 
 def vtk_cell_stress(path):
@@ -120,11 +142,19 @@ def main(out, base):
             stress = group['stress'][()]
             expected = np.array([[expected_stress(case, p[2], load) for p in element] for element in positions])
             scale = np.abs(expected).max()
+            region = group['history'][()][:, :, 2] if case['plastic'] else None   # REGION of the soil laws
+            if 'active' in case and step == 2:
+                check_active(case, stress, region, centres, load, scale, label, check)
+                expected = np.repeat(expected.mean(axis=1, keepdims=True), 8, axis=1)
+                stress = np.repeat(stress.mean(axis=1, keepdims=True), 8, axis=1)[:, :, 2:3]
+                expected = expected[:, :, 2:3]
             error = np.abs(stress - expected).max() / scale
             check(error <= 1e-10, f'{label}: stress at the points against the closed form, max error {error:.2e} '
-                                  f'of {scale:g}')
+                                  f'of {scale:g}' + (' (the elements\' mean sigma_zz)' if stress.shape[2] == 1 else ''))
             u = group['displacement'][()]
-            if step == 1:
+            if 'active' in case and step == 2:
+                pass   # plastic: no closed form of the settlement
+            elif step == 1:
                 size = np.abs(u).max() / settlement
                 check(size <= 1e-12, f'{label}: |u| {np.abs(u).max():.2e} = {size:.2e} x the elastic '
                                      f'settlement {settlement:.4g}')
@@ -139,12 +169,13 @@ def main(out, base):
             target = weight + load * case['area']
             check(abs(reaction - target) <= 1e-11 * target, f'{label}: bottom reaction {reaction:.12g} '
                                                            f'against weight + p A = {target:.12g}')
-            if case['plastic']:
-                region = group['fields/region'][()] if 'fields/region' in group else group['history'][()][:, :, 2]
+            if case['plastic'] and not ('active' in case and step == 2):
                 check(np.all(region == 0), f'{label}: every point elastic (REGION 0)')
             vtu = f'{out}/{base}_{step:04d}_{increment:04d}.vtu'
             cells = vtk_cell_stress(vtu)
             expected_cells = np.array([expected_stress(case, c[2], load) for c in centres])
+            if 'active' in case and step == 2:   # the vertical stress of the elements' mean
+                cells, expected_cells = cells[:, 2], expected_cells[:, 2]
             error = np.abs(cells - expected_cells).max() / scale
             check(error <= 1e-9, f'{label}: VTK cell stress (element centre) includes sigma0, max error {error:.2e}')
     steps = iterations(out, base)
