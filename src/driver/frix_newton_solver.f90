@@ -815,12 +815,12 @@ contains
    !> below it cannot be made smaller, so it meets the displacement criterion however small
    !> ||u|| is (an exact solution u = 0: a soil in equilibrium with its initial stress, whose
    !> augmented contact multipliers carry the in-situ pressure with no penetration).
-   pure function position_roundoff(model, u) result(floor)
+   function position_roundoff(model, u) result(floor)
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: u(:)
       real(dp) :: floor
       real(dp), parameter :: roundoff_factor = 10.0_dp
-      floor = roundoff_factor*epsilon(1.0_dp)*norm2(reshape(model%mesh%coords, [size(u)]) + u)
+      floor = roundoff_factor*epsilon(1.0_dp)*global_norm(reshape(model%mesh%coords, [size(u)]) + u)
    end function position_roundoff
 
    !> The residual that round-off alone produces: forces computed from positions (penalty
