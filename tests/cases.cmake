@@ -273,6 +273,8 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/coupling/coupling.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/eas_thin/eas_thin.cmake)
 # Soil plasticity decks (tests/soil).
 include(${CMAKE_CURRENT_SOURCE_DIR}/soil/soil.cmake)
+# The initial (in-situ) stress of soil (tests/soil_insitu).
+include(${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/soil_insitu.cmake)
 # The strip footing against Prandtl (tests/footing).
 include(${CMAKE_CURRENT_SOURCE_DIR}/footing/footing.cmake)
 # SOLVER Petsc (tests/solver/petsc.cmake).

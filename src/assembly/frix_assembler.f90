@@ -31,6 +31,9 @@ contains
 
       ! sized by the mesh's largest element (rows of its connectivity)
       real(dp), allocatable :: coords(:, :), displacement(:, :), element_force(:), element_tangent(:, :)
+      !> the element's initial stress (frix_initial_stress); unallocated: none, and the element
+      !> sees an absent optional argument (Fortran 2008, 12.5.2.12)
+      real(dp), allocatable :: initial(:, :)
       integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block, max_nodes
       type(error_t), allocatable :: element_error
 
@@ -53,6 +56,7 @@ contains
                coords(:, a) = model%mesh%coords(:, node)
                displacement(:, a) = state%u(3*node - 2:3*node)
             end do
+            call element_initial_stress(model, e, n_points, initial)
             if (present(matrix)) then
                call element%evaluate(material, coords(:, :n_nodes), displacement(:, :n_nodes), &
                                      state%alpha(:n_enhanced, e), &
@@ -60,7 +64,7 @@ contains
                                      state%history(:n_state, :n_points, e), &
                                      element_force(:3*n_nodes), &
                                      tangent=element_tangent(:3*n_nodes, :3*n_nodes), &
-                                     error=element_error)
+                                     error=element_error, initial_stress=initial)
             else if (present(gp_stress) .and. present(gp_strain)) then
                call element%evaluate(material, coords(:, :n_nodes), displacement(:, :n_nodes), &
                                      state%alpha(:n_enhanced, e), &
@@ -68,13 +72,14 @@ contains
                                      state%history(:n_state, :n_points, e), &
                                      element_force(:3*n_nodes), &
                                      stress=gp_stress(:, :n_points, e), &
-                                     strain=gp_strain(:, :n_points, e), error=element_error)
+                                     strain=gp_strain(:, :n_points, e), error=element_error, &
+                                     initial_stress=initial)
             else
                call element%evaluate(material, coords(:, :n_nodes), displacement(:, :n_nodes), &
                                      state%alpha(:n_enhanced, e), &
                                      state%committed_history(:n_state, :n_points, e), &
                                      state%history(:n_state, :n_points, e), &
-                                     element_force(:3*n_nodes), error=element_error)
+                                     element_force(:3*n_nodes), error=element_error, initial_stress=initial)
             end if
             if (allocated(element_error)) then
                call fatal_error(error, 'element '//to_string(model%mesh%element_ids(e))//': '// &
@@ -91,6 +96,22 @@ contains
          end associate
       end do
    end subroutine assemble_internal
+
+   !> `initial` = the initial stress of element e's points (6, n_points), or unallocated when
+   !> it has none.
+   subroutine element_initial_stress(model, e, n_points, initial)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: e, n_points
+      real(dp), allocatable, intent(inout) :: initial(:, :)
+      logical :: prestressed
+      prestressed = .false.
+      if (allocated(model%initial_stress_source)) prestressed = model%initial_stress_source(e) > 0
+      if (prestressed) then
+         initial = model%point_initial_stress(:, :n_points, e)
+      else if (allocated(initial)) then
+         deallocate (initial)
+      end if
+   end subroutine element_initial_stress
 
    !> Whether d fint / du is symmetric: every material in use says its tangent is (the
    !> elements then mirror their upper blocks, frix_hex8). Loads (follower pressure) and

@@ -16,7 +16,7 @@ module frix_model
 
    public :: model_t, element_block_t, dirichlet_t, nodal_force_t, pressure_load_t
    public :: body_force_t, load_curve_t, step_t, solver_controls_t, results_request_t
-   public :: history_request_t, curve_factor, contact_pair_t, kinematic_coupling_t
+   public :: history_request_t, curve_factor, contact_pair_t, kinematic_coupling_t, initial_stress_t
 
    !> Elements sharing one formulation and one material.
    type :: element_block_t
@@ -56,6 +56,22 @@ module frix_model
       real(dp) :: gravity(3) = 0.0_dp     !! acceleration vector, e.g. (0, 0, -9.81)
       integer :: curve = 0
    end type body_force_t
+
+   !> An initial (in-situ) stress on `elements` (INITIAL STRESS, docs/deck-format.md), evaluated
+   !> at each integration point's reference position by frix_initial_stress. Geostatic, with
+   !> the vertical axis `axis` and tension positive: sigma_v = -(q + gamma (z0 - z)) and
+   !> sigma_h = K0 sigma_v in the two other normal directions, no shear; else `stress`.
+   type :: initial_stress_t
+      integer, allocatable :: elements(:)
+      logical :: geostatic = .false.
+      real(dp) :: datum = 0.0_dp          !! z0: the level of sigma_v = -q [length]
+      real(dp) :: unit_weight = 0.0_dp    !! gamma = rho g [force / length^3], >= 0
+      real(dp) :: k0 = 0.0_dp             !! K0 = sigma_h / sigma_v, >= 0
+      real(dp) :: surcharge = 0.0_dp      !! q: the vertical stress at the datum, compression positive
+      integer :: axis = 3                 !! the vertical direction, 1 = x, 2 = y, 3 = z (up)
+      real(dp) :: stress(6) = 0.0_dp      !! explicit sigma0: xx yy zz xy xz yz, tensor shears
+      integer :: line = 0                 !! deck line
+   end type initial_stress_t
 
    !> Piecewise-linear curve f(t) through (times(k), factors(k)), constant beyond the ends.
    type :: load_curve_t
@@ -177,6 +193,12 @@ module frix_model
       type(step_t), allocatable :: steps(:)
       type(contact_pair_t), allocatable :: contact_pairs(:)
       type(kinematic_coupling_t), allocatable :: couplings(:)
+      type(initial_stress_t), allocatable :: initial_stresses(:)
+      !> The initial stress of each element's points, (6, max points, n_elements), and which
+      !> definition of `initial_stresses` gave it (n_elements, 0: none); both unallocated in a
+      !> model without initial stresses (frix_initial_stress)
+      real(dp), allocatable :: point_initial_stress(:, :, :)
+      integer, allocatable :: initial_stress_source(:)
       type(solver_controls_t) :: controls
       type(results_request_t) :: results
    end type model_t

@@ -21,19 +21,20 @@ module frix_deck_context
              one_line, line_integer
    public :: s_problem, s_static, s_curves, s_materials, s_mesh_file, s_node_coords, s_elements, &
              s_mesh_block, s_node_sets, s_surfaces, s_dirichlet, s_neumann, s_body_force, s_steps, &
-             s_results, s_contact, s_couplings, s_end
+             s_results, s_contact, s_couplings, s_end, s_initial_stress
 
    integer, parameter :: name_length = 20
    !> Known sections (the order of reading is read_deck's, frix_deck_reader).
-   character(len=name_length), parameter :: deck_section_names(18) = [character(len=name_length) :: &
+   character(len=name_length), parameter :: deck_section_names(19) = [character(len=name_length) :: &
       'PROBLEM TYP', 'STATIC', 'LOAD CURVES', 'MATERIALS', 'MESH FILE', 'NODE COORDS', &
       'STRUCTURE ELEMENTS', 'MESH BLOCK', 'NODE SETS', 'SURFACES', 'DIRICHLET CONDITIONS', &
-      'NEUMANN CONDITIONS', 'BODY FORCE', 'STEPS', 'RESULTS', 'CONTACT CONDITIONS', 'COUPLINGS', 'END']
+      'NEUMANN CONDITIONS', 'BODY FORCE', 'STEPS', 'RESULTS', 'CONTACT CONDITIONS', 'COUPLINGS', 'END', &
+      'INITIAL STRESS']
    integer, parameter :: s_problem = 1, s_static = 2, s_curves = 3, s_materials = 4, &
                          s_mesh_file = 5, s_node_coords = 6, s_elements = 7, s_mesh_block = 8, &
                          s_node_sets = 9, s_surfaces = 10, s_dirichlet = 11, s_neumann = 12, &
                          s_body_force = 13, s_steps = 14, s_results = 15, s_contact = 16, s_couplings = 17, &
-                         s_end = 18
+                         s_end = 18, s_initial_stress = 19
 
    !> Relative tolerance of BOX selections, times the diagonal of the model's bounding box.
    real(dp), parameter :: box_tolerance = 1.0e-9_dp
@@ -91,6 +92,7 @@ module frix_deck_context
       procedure :: take_yes_no
       procedure :: take_choice
       procedure :: take_node_target
+      procedure :: take_element_target
       procedure :: require_hex8_faces
    end type deck_reader_t
 
@@ -440,6 +442,38 @@ contains
          ok = .false.
       end select
    end subroutine take_node_target
+
+   !> `SET <element set>` or `ALL` at the line's first token -> internal element numbers.
+   subroutine take_element_target(self, model, line, position, elements, ok)
+      class(deck_reader_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      integer, intent(inout) :: position
+      integer, allocatable, intent(out) :: elements(:)
+      logical, intent(inout) :: ok
+      character(len=:), allocatable :: name
+      integer :: k, set
+      allocate (elements(0))
+      select case (line%keyword(1))
+      case ('ALL')
+         position = 2
+         elements = [(k, k=1, model%mesh%n_elements)]
+      case ('SET')
+         position = 2
+         call self%take_word(line, position, 'an element set name', name, ok)
+         if (.not. ok) return
+         set = model%mesh%find_element_set(name)
+         if (set == 0) then
+            ok = .false.
+            if (.not. self%mesh_failed) call self%report(line, 2, 'unknown element set')
+         else
+            elements = model%mesh%element_sets(set)%elements
+         end if
+      case default
+         call self%report(line, 1, 'expected SET <element set> or ALL')
+         ok = .false.
+      end select
+   end subroutine take_element_target
 
    !> Mark nodes as carrying a condition or load (for the orphan-node check).
    subroutine mark_nodes(reader, nodes, line)

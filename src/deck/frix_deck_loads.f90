@@ -214,33 +214,13 @@ contains
       type(deck_reader_t), intent(inout) :: reader
       type(model_t), intent(inout) :: model
       type(body_force_t) :: body_force
-      character(len=:), allocatable :: name
-      integer :: i, k, position, set
+      integer :: i, position
       logical :: ok
       allocate (model%body_forces(0))
       i = 0
       do while (reader%next_line(s_body_force, i, position, ok))
          associate (line => reader%lines(i))
-            select case (line%keyword(1))
-            case ('ALL')
-               position = 2
-               body_force%elements = [(k, k=1, model%mesh%n_elements)]
-            case ('SET')
-               position = 2
-               call reader%take_word(line, position, 'an element set name', name, ok)
-               if (ok) then
-                  set = model%mesh%find_element_set(name)
-                  if (set == 0) then
-                     ok = .false.
-                     if (.not. reader%mesh_failed) call reader%report(line, 2, 'unknown element set')
-                  else
-                     body_force%elements = model%mesh%element_sets(set)%elements
-                  end if
-               end if
-            case default
-               call reader%report(line, 1, 'expected SET <element set> or ALL')
-               ok = .false.
-            end select
+            call reader%take_element_target(model, line, position, body_force%elements, ok)
             call reader%expect_keyword(line, position, 'GRAVITY', ok)
             call reader%take_reals(line, position, 'a gravity component', body_force%gravity, ok)
             body_force%curve = 0

@@ -7,11 +7,12 @@
 !> Sections are processed in a fixed order, whatever their order in the file, so that every
 !> reference points backwards: controls, curves, materials; the mesh (MESH FILE, NODE COORDS,
 !> element lines of STRUCTURE ELEMENTS, MESH BLOCK, then the SET lines of STRUCTURE ELEMENTS);
-!> NODE SETS, SURFACES; conditions and loads; CONTACT CONDITIONS; COUPLINGS; STEPS; RESULTS;
-!> then, in a valid model (mesh, materials and element blocks complete), the automatic contact
+!> NODE SETS, SURFACES; conditions, loads and initial stresses; CONTACT CONDITIONS; COUPLINGS; STEPS; RESULTS;
+!> then, in a valid model (mesh, materials and element blocks complete), the initial stresses
+!> at the integration points (frix_deck_initial_stress), the automatic contact
 !> penalties, the ties' nodes and the supports against rigid-body motion (frix_deck_supports).
 !> Each section has its reader in a module of its own (frix_deck_controls, _properties, _mesh,
-!> _loads, _contact, _couplings, _results).
+!> _loads, _initial_stress, _contact, _couplings, _results).
 module frix_deck_reader
    use frix_error, only: error_t
    use frix_strings, only: to_string
@@ -25,6 +26,7 @@ module frix_deck_reader
    use frix_deck_mesh, only: read_mesh_file, read_node_coords, read_mesh_blocks, finish_mesh_numbering, &
                              read_node_sets, read_surfaces
    use frix_deck_loads, only: read_dirichlet, read_neumann, read_body_forces
+   use frix_deck_initial_stress, only: read_initial_stresses, evaluate_initial_stresses
    use frix_deck_contact, only: read_contact_pairs, set_automatic_penalties
    use frix_deck_couplings, only: read_couplings
    use frix_deck_results, only: read_results
@@ -68,11 +70,13 @@ contains
       call read_dirichlet(reader, model)
       call read_neumann(reader, model)
       call read_body_forces(reader, model)
+      call read_initial_stresses(reader, model)
       call read_contact_pairs(reader, model)
       call read_couplings(reader, model)
       call read_steps(reader, model)
       call read_results(reader, model)
       call validate_model(reader, model)
+      if (.not. reader%diagnostics%has_errors()) call evaluate_initial_stresses(reader, model)
       if (.not. reader%diagnostics%has_errors()) call set_automatic_penalties(reader, model)
       if (.not. reader%diagnostics%has_errors()) call check_ties_and_supports(reader, model)
 

@@ -42,6 +42,9 @@ contains
              to_string(size(model%nodal_forces))//' nodal-force lines, '//to_string(size(model%pressures))// &
              ' pressures, '//to_string(size(model%body_forces))//' body forces, '// &
              to_string(size(model%curves))//' load curves'//nl
+      if (allocated(model%initial_stress_source)) &
+         text = text//'  initial stress: '//to_string(size(model%initial_stresses))//' lines, on '// &
+                to_string(count(model%initial_stress_source > 0))//' elements'//nl
       n_increments = sum(model%steps%n_increments)
       text = text//'  steps: '//to_string(size(model%steps))//', '//to_string(n_increments)// &
              ' nominal increments in all'//nl

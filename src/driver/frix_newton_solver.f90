@@ -390,7 +390,8 @@ contains
       if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
           .and. on_path(model, state, path, iteration, u_norm)) then
          report%fully_converged = residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference &
-                                  .or. correction_norm <= model%controls%tol_displacement*u_norm &
+                                  .or. correction_norm <= max(model%controls%tol_displacement*u_norm, &
+                                                              position_roundoff(model, state%u)) &
                                   .or. next_correction_small(model, report, iteration, residual_norm, &
                                                              correction_norm, u_norm)
          ! (residual_only after one correction at least: its caller acts on the solution)
@@ -810,6 +811,18 @@ contains
              equation_label(model, residual_at)//', largest Newton correction '// &
              to_string(context%correction(correction_at))//' at '//equation_label(model, correction_at)
    end function worst_entries
+
+   !> The round-off of the current positions, roundoff_factor epsilon ||X + u||: a correction
+   !> below it cannot be made smaller, so it meets the displacement criterion however small
+   !> ||u|| is (an exact solution u = 0: a soil in equilibrium with its initial stress, whose
+   !> augmented contact multipliers carry the in-situ pressure with no penetration).
+   function position_roundoff(model, u) result(floor)
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: u(:)
+      real(dp) :: floor
+      real(dp), parameter :: roundoff_factor = 10.0_dp
+      floor = roundoff_factor*epsilon(1.0_dp)*global_norm(reshape(model%mesh%coords, [size(u)]) + u)
+   end function position_roundoff
 
    !> The residual that round-off alone produces: forces computed from positions (penalty
    !> contact eps_N A g, strains from x - X) carry errors of about epsilon |K_ii| |x_i| per

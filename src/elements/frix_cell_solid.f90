@@ -43,6 +43,7 @@ module frix_cell_solid
       procedure :: n_enhanced => cell_solid_n_enhanced
       procedure :: evaluate => cell_solid_evaluate
       procedure :: volume_weights => cell_solid_volume_weights
+      procedure :: point_positions => cell_solid_point_positions
    end type cell_solid_t
 
 contains
@@ -132,9 +133,17 @@ contains
       end do
    end subroutine cell_solid_volume_weights
 
+   !> X_g = sum_a N_a(xi_g) X_a at the rule's points.
+   pure subroutine cell_solid_point_positions(self, coords, positions)
+      class(cell_solid_t), intent(in) :: self
+      real(dp), intent(in) :: coords(:, :)      !! (3, n_nodes)
+      real(dp), intent(out) :: positions(:, :)  !! (3, n_points)
+      positions(:, 1:self%cell%n_points()) = matmul(coords(:, 1:self%cell%n_nodes), self%shape_values)
+   end subroutine cell_solid_point_positions
+
    !> Internal force and tangent (formulas in the module header).
    subroutine cell_solid_evaluate(self, material, coords, u, alpha, state_old, state_new, &
-                                  fint, tangent, stress, strain, error)
+                                  fint, tangent, stress, strain, error, initial_stress)
       class(cell_solid_t), intent(in) :: self
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: coords(:, :)       !! (3, n_nodes) reference coordinates
@@ -147,6 +156,7 @@ contains
       real(dp), intent(out), optional :: stress(:, :)
       real(dp), intent(out), optional :: strain(:, :)
       type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: initial_stress(:, :)   !! (6, n_points) sigma0 (element_t)
       real(dp), allocatable :: dn_dx(:, :, :), volume(:), deformation(:, :, :), total(:, :), pk2(:, :), &
                                moduli(:, :, :)
       integer :: g, n_points
@@ -165,7 +175,12 @@ contains
             return
          end if
       end do
-      call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error)
+      if (present(initial_stress)) then
+         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error, &
+                            initial_stress(:, 1:n_points))
+      else
+         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error)
+      end if
       if (allocated(error)) return
       call internal_force(dn_dx, volume, deformation, pk2, fint)
       if (present(tangent)) call element_tangent(dn_dx, volume, deformation, pk2, moduli, total_lagrangian, tangent)

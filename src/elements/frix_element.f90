@@ -30,6 +30,9 @@ module frix_element
       !> Reference-configuration volume integral of the shape functions: nodal lumping
       !> weights (sum of N_a over the volume), used for body forces.
       procedure(weights_interface), deferred :: volume_weights
+      !> Reference positions of the integration points, X_g = sum_a N_a(xi_g) X_a (where a
+      !> point's initial stress is evaluated, frix_initial_stress).
+      procedure(positions_interface), deferred :: point_positions
    end type element_t
 
    type :: element_slot_t
@@ -51,8 +54,11 @@ module frix_element
       !> `state_new` receives the history at this `u`.
       !> `stress` receives the Cauchy stress and `strain` the small strain (linear kinematics) or
       !> Green-Lagrange strain (total Lagrangian) at each integration point, Voigt order.
+      !> `initial_stress` (optional) is each point's initial (in-situ) stress sigma0: the
+      !> material is called through material_t%initial_stress_response, so that the stress at
+      !> zero strain is sigma0 (Cauchy = S at the reference state); without it, `response`.
       subroutine evaluate_interface(self, material, coords, u, alpha, state_old, state_new, &
-                                    fint, tangent, stress, strain, error)
+                                    fint, tangent, stress, strain, error, initial_stress)
          import :: element_t, material_t, dp, error_t
          class(element_t), intent(in) :: self
          class(material_t), intent(in) :: material
@@ -66,7 +72,15 @@ module frix_element
          real(dp), intent(out), optional :: stress(:, :)   !! (6, n_points) Cauchy stress
          real(dp), intent(out), optional :: strain(:, :)   !! (6, n_points)
          type(error_t), allocatable, intent(out) :: error  !! e.g. non-positive Jacobian
+         real(dp), intent(in), optional :: initial_stress(:, :)  !! (6, n_points) sigma0, tensor shears
       end subroutine evaluate_interface
+
+      pure subroutine positions_interface(self, coords, positions)
+         import :: element_t, dp
+         class(element_t), intent(in) :: self
+         real(dp), intent(in) :: coords(:, :)     !! (3, n_nodes) reference coordinates
+         real(dp), intent(out) :: positions(:, :) !! (3, n_points) reference point positions
+      end subroutine positions_interface
 
       pure subroutine weights_interface(self, coords, weights)
          import :: element_t, dp

@@ -18,6 +18,15 @@
 !>   after diagonal scaling, each mode's residual against its own scale: solve_enhanced);
 !>   the returned tangent is the statically
 !>   condensed K_uu - K_ua K_aa^{-1} K_au, i.e. exactly d fint/du with alpha = alpha(u).
+!> Initial stress S0 (an in-situ stress, element_t): S = material(E) starts from S0 at E = 0
+!>   (material_t%initial_stress_response), fint and the geometric stiffness take the whole S.
+!>   The enhanced equations weigh S - S0: h = sum_g G^T (S - S0) dV = 0. This is the variation
+!>   in alpha of the Hu-Washizu functional whose assumed stress holds the given field S0 besides
+!>   the part orthogonal to the enhanced strains (Simo & Rifai 1990 take that part only):
+!>   int W(E(u) + E~) - S0 : E~ dV. The initial stress is a given field, not one the element's
+!>   strains must reproduce, and a geostatic S0 varying with depth, which h = sum G^T S dV
+!>   would turn into enhanced strains (int zeta S_zz(zeta) dzeta /= 0), leaves alpha = 0 at
+!>   u = 0 (docs/elements.md, "Initial stress").
 !> A material whose tangent is symmetric (material_t%symmetric_tangent) gets the upper block
 !>   triangle computed and mirrored, and K_au = K_ua^T; for an unsymmetric one (non-associated
 !>   flow) every block and K_au = sum_g G^T C B dV are computed.
@@ -91,6 +100,8 @@ module frix_hex8
       real(dp) :: enhanced(6, max_eas_modes, 8) = 0.0_dp   !! G at each point
       real(dp) :: volume(8) = 0.0_dp                       !! dV at each point
       real(dp) :: compatible(6, 8) = 0.0_dp                !! compatible strains
+      logical :: prestressed = .false.                     !! the points start from `initial`
+      real(dp) :: initial(6, 8) = 0.0_dp                   !! sigma0 (S0) at each point
    end type local_problem_t
 
    !> The local problem evaluated at one alpha.
@@ -124,6 +135,7 @@ module frix_hex8
       procedure :: n_enhanced => hex8_n_enhanced
       procedure :: evaluate => hex8_evaluate
       procedure :: volume_weights => hex8_volume_weights
+      procedure :: point_positions => hex8_point_positions
    end type hex8_t
 
 contains
@@ -177,9 +189,17 @@ contains
       end do
    end subroutine hex8_volume_weights
 
+   !> X_g = sum_a N_a(xi_g) X_a at the 8 Gauss points.
+   pure subroutine hex8_point_positions(self, coords, positions)
+      class(hex8_t), intent(in) :: self
+      real(dp), intent(in) :: coords(:, :)      !! (3, 8)
+      real(dp), intent(out) :: positions(:, :)  !! (3, 8)
+      positions(:, 1:8) = matmul(coords(:, 1:8), shape_value)
+   end subroutine hex8_point_positions
+
    !> Internal force and tangent (see the module header for the formulas).
    subroutine hex8_evaluate(self, material, coords, u, alpha, state_old, state_new, &
-                            fint, tangent, stress, strain, error)
+                            fint, tangent, stress, strain, error, initial_stress)
       class(hex8_t), intent(in) :: self
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: coords(:, :)       !! (3, 8) reference coordinates
@@ -192,6 +212,7 @@ contains
       real(dp), intent(out), optional :: stress(:, :)   !! (6, 8) Cauchy stress
       real(dp), intent(out), optional :: strain(:, :)   !! (6, 8) eps or E incl. enhanced part
       type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: initial_stress(:, :)   !! (6, 8) sigma0 (element_t)
 
       real(dp) :: dn_dx(3, 8, 8)           ! reference gradients dN_a/dX_j at each point
       real(dp) :: volume(8)                ! detJ * Gauss weight
@@ -239,6 +260,10 @@ contains
          problem%finite = total_lagrangian
          problem%volume = volume
          problem%compatible = compatible
+         if (present(initial_stress)) then
+            problem%prestressed = .true.
+            problem%initial = initial_stress(:, 1:8)
+         end if
          call enhanced_operators(self%name, coords, volume, n, problem%enhanced, error)
          if (allocated(error)) return
          call solve_enhanced(self%name, material, problem, state_old, state_new, alpha(1:n), point, error)
@@ -248,8 +273,13 @@ contains
          moduli = point%moduli
       else
          total = compatible
-         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, &
-                            moduli, error)
+         if (present(initial_stress)) then
+            call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, &
+                               moduli, error, initial_stress(:, 1:8))
+         else
+            call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, &
+                               moduli, error)
+         end if
          if (allocated(error)) return
       end if
 
@@ -402,21 +432,41 @@ contains
       do g = 1, 8
          point%total(:, g) = problem%compatible(:, g) + matmul(problem%enhanced(:, 1:n, g), alpha(1:n))
       end do
-      call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
-                         point%moduli, error)
+      if (problem%prestressed) then
+         call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
+                            point%moduli, error, problem%initial)
+      else
+         call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
+                            point%moduli, error)
+      end if
       if (allocated(error)) return
       point%residual(1:n) = 0.0_dp
       point%scale(1:n) = 0.0_dp
       point%floor_scale(1:n) = 0.0_dp
       do g = 1, 8
          point%residual(1:n) = point%residual(1:n) + &
-                               problem%volume(g)*matmul(point%pk2(:, g), problem%enhanced(:, 1:n, g))
+                               problem%volume(g)*matmul(enhanced_stress(problem, point, g), problem%enhanced(:, 1:n, g))
          point%scale(1:n) = point%scale(1:n) + problem%volume(g)*maxval(abs(point%pk2(:, g)))* &
                             sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
          point%floor_scale(1:n) = point%floor_scale(1:n) + problem%volume(g)*stress_floor* &
                                   maxval(abs(point%moduli(:, :, g)))*sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
       end do
    end subroutine evaluate_local
+
+   !> The stress the enhanced equations h = sum_g G^T S dV = 0 weigh at point g: S, or S - S0
+   !> from an initial stress S0 (module header: the initial stress is an assumed stress field of
+   !> the Hu-Washizu functional, which drives no enhanced strain).
+   pure function enhanced_stress(problem, point, g) result(stress)
+      type(local_problem_t), intent(in) :: problem
+      type(local_point_t), intent(in) :: point
+      integer, intent(in) :: g
+      real(dp) :: stress(6)
+      if (problem%prestressed) then
+         stress = point%pk2(:, g) - problem%initial(:, g)
+      else
+         stress = point%pk2(:, g)
+      end if
+   end function enhanced_stress
 
    !> alpha <- alpha + s d along the Newton direction d = -K_aa^{-1} h. With the slope
    !> phi(s) = d . h(alpha + s d), phi(0) = -d . K_aa d, which is negative where K_aa is

@@ -52,8 +52,9 @@ contains
       end if
    end subroutine compatible_kinematics
 
-   !> Stress and tangent at all points for the given total strains.
-   subroutine material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
+   !> Stress and tangent at all points for the given total strains; with `initial_stress`
+   !> (6, n_points) each point starts from its sigma0 (material_t%initial_stress_response).
+   subroutine material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error, initial_stress)
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
       logical, intent(in) :: finite   !! total Lagrangian: total = E, pk2 = S
@@ -62,11 +63,17 @@ contains
       real(dp), intent(inout) :: state_new(:, :)
       real(dp), intent(out) :: pk2(:, :), moduli(:, :, :)   !! (6, n_points), (6, 6, n_points)
       type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: initial_stress(:, :)
       type(error_t), allocatable :: material_error
       integer :: g
       do g = 1, size(total, 2)
-         call material%response(total(:, g), finite, state_old(:, g), state_new(:, g), pk2(:, g), &
-                                moduli(:, :, g), material_error)
+         if (present(initial_stress)) then
+            call material%initial_stress_response(total(:, g), finite, initial_stress(:, g), state_old(:, g), &
+                                                  state_new(:, g), pk2(:, g), moduli(:, :, g), material_error)
+         else
+            call material%response(total(:, g), finite, state_old(:, g), state_new(:, g), pk2(:, g), &
+                                   moduli(:, :, g), material_error)
+         end if
          if (allocated(material_error)) then
             call fatal_error(error, name//', integration point '//to_string(g)//': '// &
                              material_error%message)

@@ -30,7 +30,8 @@ contains
       tests = [new_unittest('every law: sigma = sigma0 at zero strain, sigma0 + response, same tangent', test_every_law), &
                new_unittest('Mohr-Coulomb: a geostatic state sheared to its limit', test_mohr_coulomb_shear), &
                new_unittest('Drucker-Prager: a geostatic state sheared to its limit', test_drucker_prager_shear), &
-               new_unittest('von Mises: yields where sigma0 + D eps reaches SIGY', test_von_mises)]
+               new_unittest('von Mises: yields where sigma0 + D eps reaches SIGY', test_von_mises), &
+               new_unittest('every law: zero strain from sigma0 leaves the history unchanged', test_history_at_rest)]
    end subroutine collect_initial_stress
 
    !> The law `keyword` with properties that keep the states below elastic.
@@ -146,6 +147,36 @@ contains
       call check_tangent_by_differences(error, material, strain + [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0e-4_dp, 0.0_dp], &
                                         1.0e-6_dp, label//': tangent from sigma0', .false., state, initial)
    end subroutine shear_to_limit
+
+   !> A point at rest in its initial state: zero strain from sigma0 keeps the history of a law
+   !> with one (here EQPS = 0.01, the rest 0) as it is (the initial stress is no plastic flow),
+   !> under both kinematics.
+   subroutine test_history_at_rest(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: material
+      real(dp), allocatable :: old(:), new(:)
+      real(dp) :: stress(6), tangent(6, 6)
+      integer :: k, f, j
+      associate (keywords => material_keywords())
+         do k = 1, size(keywords)
+            call make_law(keywords(k), material)
+            if (material%n_state() == 0) cycle
+            old = [(0.0_dp, j=1, material%n_state())]
+            old(1) = 0.01_dp   ! EQPS of von Mises and of the soil laws
+            allocate (new(material%n_state()))
+            do f = 1, 2
+               new = -1.0_dp
+               call material_response(error, material, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], stress, &
+                                      tangent, f == 2, old, new, geostatic)
+               if (allocated(error)) return
+               call check(error, all(new == old), trim(keywords(k))//': history changed at rest, finite '// &
+                          merge('T', 'F', f == 2))
+               if (allocated(error)) return
+            end do
+            deallocate (new)
+         end do
+      end associate
+   end subroutine test_history_at_rest
 
    !> sigma0 = 300 e_x x e_x, strain eps (1, -nu, -nu): sigma_xx = 300 + E eps reaches SIGY = 420
    !> at eps = 120 / E: elastic just below, plastic just above.
