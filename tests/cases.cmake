@@ -275,3 +275,5 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/eas_thin/eas_thin.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/soil/soil.cmake)
 # The strip footing against Prandtl (tests/footing).
 include(${CMAKE_CURRENT_SOURCE_DIR}/footing/footing.cmake)
+# A buried pipe pulled through sand and clay against ALA and DNV (tests/pipe_soil).
+include(${CMAKE_CURRENT_SOURCE_DIR}/pipe_soil/pipe_soil.cmake)
