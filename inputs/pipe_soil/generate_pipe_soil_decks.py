@@ -30,6 +30,10 @@ pipe_<sand|clay>_<lateral|uplift>[_<variant>].dck listed in DECKS.
 import argparse
 import math
 import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "strip_footing"))
+from generate_footing_decks import graded  # noqa: E402  (geometric grading of a mesh line)
 
 # geometry (m)
 DIAMETER, CENTRE_DEPTH, WALL = 0.5, 1.0, 0.05
@@ -61,6 +65,10 @@ DECKS = {
     "pipe_clay_uplift_tiny": ("clay", "uplift", 0.05, 10, {}, "tiny"),
     "pipe_sand_lateral_tiny": ("sand", "lateral", 0.06, 12, {}, "tiny"),
     "pipe_clay_lateral_tiny": ("clay", "lateral", 0.06, 12, {}, "tiny"),
+    "pipe_sand_uplift_tiny_free": ("sand", "uplift", 0.03, 10, {"free": True}, "tiny"),
+    "pipe_clay_uplift_tiny_free": ("clay", "uplift", 0.05, 10, {"free": True}, "tiny"),
+    "pipe_sand_uplift_tiny_psi5": ("sand", "uplift", 0.03, 10, {"psi": 5.0}, "tiny"),
+    "pipe_sand_lateral_tiny_psi5": ("sand", "lateral", 0.06, 12, {"psi": 5.0}, "tiny"),
     "pipe_sand_lateral_tiny_eas0": ("sand", "lateral", 0.06, 12, {"eas": 0}, "tiny"),
     "pipe_sand_uplift_smooth": ("sand", "uplift", 0.05, 40, {"mu": 0.0}, "coarse"),
 }
@@ -109,34 +117,18 @@ def design_band(soil, direction):
     return 0.7 * min(values), 1.3 * max(values)
 
 
+def free_pull_force(soil, direction):
+    """The force (kN, on the slab of the model) of a path-controlled pull: twice the band's top,
+    so that the load factor stays below 1 over step 2."""
+    factor = 2 if direction == "uplift" else 1
+    return 2 * design_band(soil, direction)[1] * THICKNESS / factor
+
+
 def soil_weight(mesh_name, half):
     """Weight of the slab's soil (kN): the block less the cavity, a polygon of 4 m sides."""
     sides = 4 * MESHES[mesh_name][0]
     area = 2 * HALF_WIDTH * DEPTH - 0.5 * sides * RADIUS ** 2 * math.sin(2 * math.pi / sides)
     return UNIT_WEIGHT * THICKNESS * area * (0.5 if half else 1.0)
-
-
-def graded(start, length, n, first):
-    """n intervals from start over length, the first of size `first`, growing geometrically
-    (the same grading as inputs/strip_footing/generate_footing_decks.py)."""
-    if n * first >= length:
-        return [start + length * k / n for k in range(n + 1)]
-    low, high = 1.0, 2.0
-    while first * (high ** n - 1) / (high - 1) < length:
-        high *= 2
-    for _ in range(200):  # bisection for the ratio r: first (r^n - 1) / (r - 1) = length
-        r = 0.5 * (low + high)
-        if first * (r ** n - 1) / (r - 1) < length:
-            low = r
-        else:
-            high = r
-    points, size, value = [start], first, start
-    for _ in range(n):
-        value += size
-        points.append(value)
-        size *= 0.5 * (low + high)
-    points[-1] = start + length
-    return points
 
 
 def square_point(k, m):
@@ -257,6 +249,8 @@ def write_mesh(path, mesh_name, half):
         lines.extend(", ".join(map(str, ids[i:i + 16])) for i in range(0, len(ids), 16))
 
     node_set("pipe_nodes", pipe_nodes)
+    node_set("pipe_crown", [i for i, p in pipe_nodes.items()
+                            if abs(p[0]) < 1e-9 and p[1] == 0.0 and abs(p[2] + CENTRE_DEPTH - RADIUS) < 1e-9])
     node_set("soil_front", [i for i, p in soil_nodes.items() if p[1] == 0.0])
     node_set("soil_back", [i for i, p in soil_nodes.items() if p[1] == THICKNESS])
     if half:
@@ -280,7 +274,27 @@ def deck_text(name, soil_name, direction, displacement, increments, overrides, m
     design_text = "; ".join("%s %.1f kN/m (%s)" % (k, v, t) for k, (v, t) in design.items())
     # the symmetry plane x = 0 of the half model holds pipe nodes, which the coupling moves
     near = "SET soil_symmetry DOF 1 0 0 VAL 0 0 0" if half else "SET sides      DOF 1 0 0 VAL 0 0 0"
+    # free: the pipe follows the soil in step 1 (u_z free, weightless) and is pulled by a force
+    # in step 2, path-controlled by its crown's u_z (docs/verification/pipe_soil.md)
+    free = s.get("free", False)
+    pull_force = free_pull_force(soil_name, direction)
+    ref_line = ("NODE %d   DOF 1 1 0 VAL 0 0 0\n" % REF_NODE +
+                "------------------------------------------------NEUMANN CONDITIONS\n" +
+                "NODE %d   FORCE 0 0 %.6g CURVE 1" % (REF_NODE, pull_force)) if free else \
+        "NODE %d   DOF 1 1 1 VAL %s CURVE 1 1 1" % (REF_NODE, move)
+    control = ("Path SET pipe_crown DOF 3 TARGET %g" % displacement) if free else "Displacement"
     friction = "MU %.4f " % s["mu"] if s["mu"] > 0 else ""
+    if free:
+        steps_text = ("Step 1: the soil's weight, the weightless pipe free to settle with it. Step 2\n"
+                      " (RESET_DISPLACEMENT): a force F f(t) = %g (t - 1) kN pulls the reference node up,\n"
+                      " path-controlled: the pipe's crown rises to u_z = %g m (total) in %d increments.\n"
+                      " Force per metre of pipe: %d x %g (t - 1) / t." % (pull_force, displacement, increments,
+                                                                          factor, pull_force))
+    else:
+        steps_text = ("Step 1: the soil's weight, pipe held (geostatic state). Step 2 (RESET_DISPLACEMENT):\n"
+                      " the pipe's reference node moved %g m in %s in %d increments.\n"
+                      " Force per metre of pipe: %d x r%d_n%d / t." % (displacement, "x" if dof == 1 else "z",
+                                                                       increments, factor, dof, REF_NODE))
     friction += "PENALTY_FACTOR %g " % s["penalty_factor"] if "penalty_factor" in s else ""
     return f"""==================================================================
  Buried pipe pulled {'sideways' if dof == 1 else 'upwards'} through {soil_name}
@@ -292,9 +306,8 @@ def deck_text(name, soil_name, direction, displacement, increments, overrides, m
  Soil: Mohr-Coulomb E = {s['young']:g} kPa, nu = {s['nu']:g}, c = {s['cohesion']:g} kPa,
  phi = {s['phi']:g}, psi = {s['psi']:g} degrees, unit weight {UNIT_WEIGHT:g} kN/m^3.
  Pipe-soil contact: node-to-segment, Coulomb mu = {s['mu']:.3f}.
- Step 1: the soil's weight, pipe held (geostatic state). Step 2 (RESET_DISPLACEMENT): the
- pipe's reference node moved {displacement:g} m in {'x' if dof == 1 else 'z'} in {increments} increments.
- Force per metre of pipe: {factor} x r{dof}_n{REF_NODE} / t. Design: {design_text}.
+ {steps_text}
+ Design: {design_text}.
  units: kN, m, kPa
 ==================================================================
 ---------------------------------------------------------PROBLEM TYP
@@ -329,15 +342,15 @@ SET far        DOF 1 0 0 VAL 0 0 0
 SET bottom     DOF 1 0 1 VAL 0 0 0
 SET soil_front DOF 0 1 0 VAL 0 0 0
 SET soil_back  DOF 0 1 0 VAL 0 0 0
-NODE {REF_NODE}   DOF 1 1 1 VAL {move} CURVE 1 1 1
 NODE {ROT_NODE}   DOF 1 1 1 VAL 0 0 0
+{ref_line}
 ------------------------------------------------------------BODY FORCE
 SET soil GRAVITY 0 0 -{GRAVITY:g}
 --------------------------------------------------CONTACT CONDITIONS
 PAIR 1 SLAVE cavity MASTER pipe_outer {friction}GAPTOL 1.0e-6
 ---------------------------------------------------------------STEPS
 STEP 1 NUMSTEP 2 CONTROL Load
-STEP 2 NUMSTEP {increments} CONTROL Displacement RESET_DISPLACEMENT
+STEP 2 NUMSTEP {increments} CONTROL {control} RESET_DISPLACEMENT
 -------------------------------------------------------------RESULTS
 VTK Yes LISTING No EVERY {increments}
 HISTORY NODE {REF_NODE} DOF 1 KIND R

@@ -5,10 +5,11 @@ design formulas' band and statics.
     check_pipe_soil.py OUT BASE PLATEAU_TOLERANCE     (OUT/BASE_history.csv: the run's history)
 
 The deck BASE names its soil, direction and mesh (generate_pipe_soil_decks.DECKS). Checks:
-- the run reached its last increment (t = 2);
+- the run reached its last increment (t = 2), or with a path-controlled pull (decks with
+  `free`) the pipe its displacement;
 - a plateau: the force per metre of pipe, P = k r_d / t (k = 2 for the half model, d the
-  direction of the pull), changed by less than PLATEAU_TOLERANCE (relative) over the last
-  quarter of the pull;
+  direction of the pull, r_d the reference node's reaction or the applied force F (t - 1)),
+  changed by less than PLATEAU_TOLERANCE (relative) over the last quarter of the pull;
 - the plateau inside the band of the design formulas: 0.7 x the lowest to 1.3 x the highest
   (generate_pipe_soil_decks.design_band);
 - statics in every increment: the pipe's reaction equals the resultant of the contact forces
@@ -26,25 +27,35 @@ import generate_pipe_soil_decks as g  # noqa: E402
 
 def main():
     out, base, tolerance = sys.argv[1], sys.argv[2], float(sys.argv[3])
-    soil, direction, displacement, _, _, mesh = g.DECKS[base]
+    soil, direction, displacement, _, overrides, mesh = g.DECKS[base]
     half = direction == "uplift"
+    free = overrides.get("free", False)
     dof, factor = (3, 2.0) if half else (1, 1.0)
     with open(pathlib.Path(out) / f"{base}_history.csv") as f:
         rows = [r for r in csv.DictReader(f) if float(r["time"]) > 1.0 + 1e-12]
     times = [float(r["time"]) for r in rows]
-    force = [factor * float(r["r%d_n%d" % (dof, g.REF_NODE)]) / g.THICKNESS for r in rows]
+    if free:  # the pull is the applied force F (t - 1); the pipe's displacement drives the step
+        pull = [g.free_pull_force(soil, direction) * (t - 1.0) for t in times]
+        moved = [float(r["u%d_n%d" % (dof, g.REF_NODE)]) for r in rows]
+    else:     # the pull is the reaction of the reference node, moved by F f(t)
+        pull = [float(r["r%d_n%d" % (dof, g.REF_NODE)]) for r in rows]
+        moved = [displacement * (t - 1.0) for t in times]
+    force = [factor * q / g.THICKNESS for q in pull]
     plateau = force[-1]
     failures = []
-    if abs(times[-1] - 2.0) > 1e-12:
+    if not free and abs(times[-1] - 2.0) > 1e-12:
         failures.append("the run stopped at t = %g" % times[-1])
-    quarter = [p for t, p in zip(times, force) if t >= times[-1] - 0.25]
+    if free and moved[-1] < displacement:
+        failures.append("the pipe stopped at u = %g m" % moved[-1])
+    quarter = [p for u, p in zip(moved, force) if u >= moved[-1] - 0.25 * displacement]
     change = (max(quarter) - min(quarter)) / abs(plateau)
     low, high = g.design_band(soil, direction)
-    contact = max(abs(float(r["r%d_n%d" % (dof, g.REF_NODE)]) - float(r["c%d_pair1" % dof])) for r in rows)
+    contact = max(abs(q - float(r["c%d_pair1" % dof])) for q, r in zip(pull, rows))
     weight = g.soil_weight(mesh, half)
-    vertical = max(abs(float(r["r3_sum_bottom"]) + float(r["r3_n%d" % g.REF_NODE]) - weight) for r in rows)
+    lift = pull if free else [float(r["r3_n%d" % g.REF_NODE]) for r in rows]
+    vertical = max(abs(float(r["r3_sum_bottom"]) + q - weight) for q, r in zip(lift, rows))
     print("plateau P = %.2f kN/m after %.0f mm; change over the last quarter %.2f %% (tolerance %.1f %%)"
-          % (plateau, 1000 * displacement * (times[-1] - 1.0), 100 * change, 100 * tolerance))
+          % (plateau, 1000 * moved[-1], 100 * change, 100 * tolerance))
     for name, (value, text) in g.design_resistances(soil, direction).items():
         print("  %-22s %7.2f kN/m (%s): P / design = %.3f" % (name, value, text, plateau / value))
     print("band %.2f ... %.2f kN/m; statics: pipe vs contact %.1e, vertical %.1e of the weight"
