@@ -7,7 +7,7 @@ module frix_assembler
    use frix_strings, only: to_string
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    implicit none
    private
 
@@ -25,7 +25,7 @@ contains
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(out) :: fint(:)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t), intent(inout), optional :: matrix
+      class(system_matrix_t), intent(inout), optional :: matrix
       real(dp), intent(out), optional :: gp_stress(:, :, :)
       real(dp), intent(out), optional :: gp_strain(:, :, :)
 

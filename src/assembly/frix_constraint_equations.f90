@@ -20,7 +20,7 @@ module frix_constraint_equations
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    implicit none
    private
 
@@ -133,7 +133,7 @@ contains
    subroutine condense_matrix(self, dependent, matrix, error)
       class(constraint_equations_t), intent(in) :: self
       logical, intent(in) :: dependent(:)
-      type(sparse_matrix_t), intent(inout) :: matrix
+      class(system_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
       call move_dependent(self, dependent, matrix, .true., error)
       if (.not. allocated(error)) call move_dependent(self, dependent, matrix, .false., error)
@@ -143,99 +143,27 @@ contains
    subroutine move_dependent(self, dependent, matrix, rows, error)
       type(constraint_equations_t), intent(in) :: self
       logical, intent(in) :: dependent(:), rows
-      type(sparse_matrix_t), intent(inout) :: matrix
+      class(system_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(inout) :: error
-      integer :: r
+      integer :: r, missing(2)
       do r = 1, self%n_rows
          if (.not. dependent(self%equation(r))) cycle
          associate (masters => self%master(self%start(r) + 1:self%start(r + 1)), &
                     weights => self%weight(self%start(r) + 1:self%start(r + 1)))
-            if (rows) then
-               call move_row(matrix, self%equation(r), masters, weights, error)
-            else
-               call move_column(matrix, self%equation(r), masters, weights, error)
-            end if
+            call matrix%move_equation(self%equation(r), masters, weights, rows, missing)
          end associate
-         if (allocated(error)) return
+         if (missing(1) /= 0) then
+            call missing_pair(missing(1), missing(2), error)
+            return
+         end if
       end do
    end subroutine move_dependent
 
-   !> Row e times w_k added to rows m_k, then zeroed. The columns holding row e are those of
-   !> the neighbours n of e's node s (the pattern is structurally symmetric).
-   subroutine move_row(matrix, e, masters, weights, error)
-      type(sparse_matrix_t), intent(inout) :: matrix
-      integer, intent(in) :: e, masters(:)
-      real(dp), intent(in) :: weights(:)
-      type(error_t), allocatable, intent(inout) :: error
-      integer :: k, n, i, a, s, c, source, target, k_master
-      real(dp) :: value
-      call split_equation(e, s, c)
-      do k = matrix%node_ptr(s), matrix%node_ptr(s + 1) - 1
-         n = matrix%node_adj(k)
-         do i = 1, 3
-            source = matrix%entry_position(n, matrix%neighbour_index(n, s), i, c)
-            value = matrix%values(source)
-            if (value == 0.0_dp) cycle
-            do a = 1, size(masters)
-               k_master = matrix%neighbour_index(n, node_of(masters(a)))
-               if (k_master == 0) then
-                  call missing_pair(node_of(masters(a)), n, error)
-                  return
-               end if
-               target = matrix%entry_position(n, k_master, i, direction_of(masters(a)))
-               matrix%values(target) = matrix%values(target) + weights(a)*value
-            end do
-            matrix%values(source) = 0.0_dp
-         end do
-      end do
-   end subroutine move_row
-
-   !> Column e times w_k added to columns m_k, then zeroed.
-   subroutine move_column(matrix, e, masters, weights, error)
-      type(sparse_matrix_t), intent(inout) :: matrix
-      integer, intent(in) :: e, masters(:)
-      real(dp), intent(in) :: weights(:)
-      type(error_t), allocatable, intent(inout) :: error
-      integer :: k, m, j, a, s, c, source, target, k_master
-      real(dp) :: value
-      call split_equation(e, s, c)
-      do k = 1, matrix%node_ptr(s + 1) - matrix%node_ptr(s)
-         m = matrix%node_adj(matrix%node_ptr(s) + k - 1)
-         do j = 1, 3
-            source = matrix%entry_position(s, k, c, j)
-            value = matrix%values(source)
-            if (value == 0.0_dp) cycle
-            do a = 1, size(masters)
-               k_master = matrix%neighbour_index(node_of(masters(a)), m)
-               if (k_master == 0) then
-                  call missing_pair(node_of(masters(a)), m, error)
-                  return
-               end if
-               target = matrix%entry_position(node_of(masters(a)), k_master, direction_of(masters(a)), j)
-               matrix%values(target) = matrix%values(target) + weights(a)*value
-            end do
-            matrix%values(source) = 0.0_dp
-         end do
-      end do
-   end subroutine move_column
-
-   !> Node and direction (1..3) of global equation e.
-   pure subroutine split_equation(e, node, direction)
-      integer, intent(in) :: e
-      integer, intent(out) :: node, direction
-      node = node_of(e)
-      direction = direction_of(e)
-   end subroutine split_equation
-
+   !> Node of global equation e (3 DOFs per node).
    elemental integer function node_of(e)
       integer, intent(in) :: e
       node_of = (e + 2)/3
    end function node_of
-
-   elemental integer function direction_of(e)
-      integer, intent(in) :: e
-      direction_of = e - 3*(node_of(e) - 1)
-   end function direction_of
 
    subroutine missing_pair(first, second, error)
       integer, intent(in) :: first, second

@@ -24,7 +24,7 @@ module frix_contact_assembly
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
    use frix_model, only: model_t
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    use frix_face_projection, only: face_normal, face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
                                   contact_open, contact_slip, add_touching_stiffness
@@ -287,7 +287,7 @@ contains
       type(model_t), intent(in) :: model
       type(contact_system_t), intent(inout) :: system
       real(dp), intent(in) :: u(:)
-      type(sparse_matrix_t), intent(inout) :: matrix
+      class(system_matrix_t), intent(inout) :: matrix
       type(error_t), allocatable, intent(out) :: error
       integer :: p, i, a, b, n_nodes, nodes(max_kernel_nodes), first_ring, n_pairs
       integer, allocatable :: pairs(:, :)
@@ -317,7 +317,7 @@ contains
                ! face share an element)
                do a = 1, merge(5, 1, n_nodes > 5)
                   do b = max(a + 1, merge(2, 6, a == 1)), n_nodes
-                     if (matrix%neighbour_index(nodes(a), nodes(b)) == 0) then
+                     if (.not. matrix%couples(nodes(a), nodes(b))) then
                         call add_contact_pair(system, nodes(a), nodes(b))
                         missing = .true.
                      end if
@@ -352,7 +352,7 @@ contains
       type(contact_system_t), intent(inout) :: system
       real(dp), intent(in) :: u(:)
       real(dp), intent(inout) :: fint(:)
-      type(sparse_matrix_t), intent(inout), optional :: matrix
+      class(system_matrix_t), intent(inout), optional :: matrix
       logical, intent(in), optional :: predictor  !! first iteration of an increment: add the touching stiffness
       real(dp) :: x_slave(3), x_face(3, 4), force(3*max_kernel_nodes), tangent(3*max_kernel_nodes, 3*max_kernel_nodes)
       real(dp) :: force3(3), tangent3(3, 3), shape(4), d_xi(4), d_eta(4)

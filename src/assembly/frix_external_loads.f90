@@ -4,7 +4,7 @@
 module frix_external_loads
    use frix_kinds, only: dp
    use frix_model, only: model_t, curve_factor
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    use frix_surface_load, only: pressure_load
    implicit none
    private
@@ -24,7 +24,7 @@ contains
       real(dp), intent(in) :: time
       real(dp), intent(in) :: u(:)
       real(dp), intent(out) :: fext(:)
-      type(sparse_matrix_t), intent(inout), optional :: matrix
+      class(system_matrix_t), intent(inout), optional :: matrix
       real(dp), intent(in), optional :: step_window(2)
       integer :: i, k, a, node, e, face, equation
       real(dp) :: factor, coords(3, 4), displacement(3, 4), force(12), stiffness(12, 12)

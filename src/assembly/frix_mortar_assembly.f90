@@ -9,7 +9,7 @@
 module frix_mortar_assembly
    use frix_kinds, only: dp
    use frix_model, only: model_t
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    use frix_contact_pass, only: contact_pass_t
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_kernel, only: contact_point_result_t, contact_open, add_touching_stiffness
@@ -31,7 +31,7 @@ contains
       type(contact_pass_t), intent(inout) :: pass
       logical, intent(in) :: frictional
       real(dp), intent(in) :: u(:)
-      type(sparse_matrix_t), intent(in) :: matrix
+      class(system_matrix_t), intent(in) :: matrix
       integer, allocatable, intent(out) :: missing(:, :)
       integer, intent(out) :: n_missing
       type(mortar_node_t) :: node
@@ -49,7 +49,7 @@ contains
          call slave_node(pass, frictional, i, node)
          do a = 1, size(node%nodes)
             do b = a + 1, size(node%nodes)
-               if (matrix%neighbour_index(node%nodes(a), node%nodes(b)) /= 0) cycle
+               if (matrix%couples(node%nodes(a), node%nodes(b))) cycle
                if (n_missing == size(missing, 2)) missing = reshape(missing, [2, 2*n_missing], pad=[0])
                n_missing = n_missing + 1
                missing(:, n_missing) = [node%nodes(a), node%nodes(b)]
@@ -69,7 +69,7 @@ contains
       logical, intent(in) :: touching
       real(dp), intent(in) :: friction_scale
       real(dp), intent(inout) :: fint(:)
-      type(sparse_matrix_t), intent(inout), optional :: matrix
+      class(system_matrix_t), intent(inout), optional :: matrix
       type(mortar_node_t) :: node
       real(dp), allocatable :: force(:), tangent(:, :)
       real(dp) :: tangential_penalty

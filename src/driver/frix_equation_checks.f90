@@ -7,7 +7,7 @@ module frix_equation_checks
    use frix_strings, only: to_string
    use frix_finite_check, only: first_non_finite
    use frix_model, only: model_t
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    implicit none
    private
 
@@ -34,16 +34,13 @@ contains
    !> non-finite entry.
    subroutine check_finite_tangent(model, matrix, failure)
       type(model_t), intent(in) :: model
-      type(sparse_matrix_t), intent(in) :: matrix
+      class(system_matrix_t), intent(in) :: matrix
       character(len=:), allocatable, intent(inout) :: failure
-      integer :: entry, column
-      entry = first_non_finite(matrix%values)
-      if (entry == 0) return
-      column = 1
-      do while (matrix%col_ptr(column) < entry)   ! column j holds entries col_ptr(j-1)+1 .. col_ptr(j)
-         column = column + 1
-      end do
-      failure = 'the tangent stiffness is not finite ('//to_string(matrix%values(entry))//') in the column of '// &
+      integer :: column
+      real(dp) :: value
+      call matrix%first_non_finite_column(column, value)
+      if (column == 0) return
+      failure = 'the tangent stiffness is not finite ('//to_string(value)//') in the column of '// &
                 equation_label(model, column)
    end subroutine check_finite_tangent
 

@@ -35,7 +35,8 @@ module frix_newton_solver
    use frix_stop_request, only: stop_requested
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
+   use frix_global_reductions, only: global_norm, global_dot, global_max_abs_location
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
@@ -80,7 +81,7 @@ module frix_newton_solver
 
    !> Everything the iterations need that outlives one increment.
    type :: newton_context_t
-      type(sparse_matrix_t) :: matrix
+      class(system_matrix_t), allocatable :: matrix   !! in the storage of the solver (its new_matrix)
       class(linear_solver_t), allocatable :: solver    !! from the deck's SOLVER (frix_linear_solver_registry)
       logical :: symmetric = .true.        !! tangent symmetric: materials, loads and contact all say so
       logical, allocatable :: fixed(:)     !! constrained equations
@@ -144,6 +145,14 @@ contains
       if (tied(state)) call add_tie_equations(state%contact%passes, context%constraints)
       call add_coupling_equations(model, context%constraints)
       call context%constraints%pattern_pairs(model%mesh%n_nodes, model%mesh%connectivity, pairs)
+      context%symmetric = .not. has_follower_loads(model) .and. internal_tangent_symmetric(model)
+      ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
+      if (state%has_contact) then
+         if (state%contact%unsymmetric) context%symmetric = .false.
+      end if
+      call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
+      if (allocated(error)) return
+      call context%solver%new_matrix(context%matrix)
       if (state%has_contact) then
          call context%constraints%master_nodes(model%mesh%n_nodes, first, masters)
          call add_pattern_pairs(state%contact, pairs, first, masters)
@@ -152,13 +161,6 @@ contains
       else
          call context%matrix%create_node_block_pattern(model%mesh%n_nodes, model%mesh%connectivity, pairs, error)
       end if
-      if (allocated(error)) return
-      context%symmetric = .not. has_follower_loads(model) .and. internal_tangent_symmetric(model)
-      ! the slip branch of Coulomb friction and smoothed normals make the tangent unsymmetric
-      if (state%has_contact) then
-         if (state%contact%unsymmetric) context%symmetric = .false.
-      end if
-      call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
       if (allocated(error)) return
       allocate (context%fixed(n), context%prescribed(n))
       allocate (context%dependent(n), source=.false.)
@@ -383,7 +385,7 @@ contains
       real(dp) :: u_norm
       integer :: n_released
       outcome = outcome_iterate
-      u_norm = norm2(state%u)
+      u_norm = global_norm(state%u)
       if (residual_norm <= max(model%controls%tol_residual*reference, roundoff_floor(model, context, state%u)) &
           .and. on_path(model, state, path, iteration, u_norm)) then
          report%fully_converged = residual_norm <= zero_residual_fraction*model%controls%tol_residual*reference &
@@ -485,14 +487,14 @@ contains
       end if
       call check_finite(model, context%correction, 'Newton correction', report%failure)
       if (allocated(report%failure)) return
-      energy = abs(dot_product(context%correction, context%residual))
+      energy = abs(global_dot(context%correction, context%residual))
       if (.not. ieee_is_finite(energy)) then
          report%failure = 'the energy |du . r| of the correction is not finite (beyond the range of real '// &
                           'numbers); its largest term is at '// &
-                          equation_label(model, maxloc(abs(context%correction*context%residual), dim=1))
+                          equation_label(model, global_max_abs_location(context%correction*context%residual))
          return
       end if
-      correction_norm = norm2(context%correction)
+      correction_norm = global_norm(context%correction)
       state%u = state%u + context%correction
       call check_finite(model, state%u, 'displacement', report%failure)
       if (allocated(report%failure)) return
@@ -630,8 +632,8 @@ contains
       elsewhere
          context%reactions = 0.0_dp
       end where
-      residual_norm = norm2(context%residual)
-      reference = max(norm2(merge(context%fext, 0.0_dp, .not. context%fixed)), norm2(context%reactions))
+      residual_norm = global_norm(context%residual)
+      reference = max(global_norm(merge(context%fext, 0.0_dp, .not. context%fixed)), global_norm(context%reactions))
       if (reference == 0.0_dp) reference = 1.0_dp
       if (.not. (ieee_is_finite(residual_norm) .and. ieee_is_finite(reference))) &
          failure = 'the norm of the residual or of the reactions is not finite (beyond the range of real numbers)'
@@ -694,7 +696,7 @@ contains
       integer :: k, replaced_end
       evaluated = .false.
       low = 0.0_dp
-      g_low = dot_product(context%correction, context%residual)   ! g(0): the residual before the step
+      g_low = global_dot(context%correction, context%residual)   ! g(0): the residual before the step
       high = 1.0_dp
       g_high = 0.0_dp
       bracketed = .false.      ! g(low) > 0 >= g(high)
@@ -714,7 +716,7 @@ contains
             failed_high = .true.
          else
             if (trial_norm <= acceptance_level) then
-               correction_norm = fraction*norm2(context%correction)
+               correction_norm = fraction*global_norm(context%correction)
                evaluated = .true.
                residual_norm = trial_norm
                reference = trial_reference
@@ -724,7 +726,7 @@ contains
                best_norm = trial_norm
                best_fraction = fraction
             end if
-            g = dot_product(context%correction, context%residual)
+            g = global_dot(context%correction, context%residual)
             if (g_low > 0.0_dp .and. g <= 0.0_dp) then
                ! overshoot (or a root): the root lies in (low, fraction]
                if (bracketed) then
@@ -765,7 +767,7 @@ contains
       state%u = state%u + (best_fraction - fraction)*context%correction
       time = time + (best_fraction - fraction)*time_correction
       state%time = time
-      correction_norm = best_fraction*norm2(context%correction)
+      correction_norm = best_fraction*global_norm(context%correction)
    end subroutine contact_line_search
 
    !> Factorize and solve K du = r (a CHOLMOD solver falls back to UMFPACK by itself where the
@@ -801,8 +803,8 @@ contains
       type(newton_context_t), intent(in) :: context
       character(len=:), allocatable :: text
       integer :: residual_at, correction_at
-      residual_at = maxloc(abs(context%residual), dim=1)
-      correction_at = maxloc(abs(context%correction), dim=1)
+      residual_at = global_max_abs_location(context%residual)
+      correction_at = global_max_abs_location(context%correction)
       text = '; largest residual '//to_string(context%residual(residual_at))//' at '// &
              equation_label(model, residual_at)//', largest Newton correction '// &
              to_string(context%correction(correction_at))//' at '//equation_label(model, correction_at)

@@ -14,7 +14,7 @@ module frix_auto_solver
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_strings, only: to_string
-   use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_system_matrix, only: system_matrix_t
    use frix_linear_solver, only: linear_solver_t, solver_not_positive_definite
    use frix_cholmod_solver, only: cholmod_solver_t
    use frix_umfpack_solver, only: umfpack_solver_t
@@ -48,7 +48,7 @@ contains
 
    subroutine factorize(solver, matrix, error)
       class(auto_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in), target :: matrix
+      class(system_matrix_t), intent(in), target :: matrix
       type(error_t), allocatable, intent(out) :: error
       if (.not. solver%use_fallback) then
          call solver%primary%factorize(matrix, error)
@@ -66,7 +66,7 @@ contains
 
    subroutine solve(solver, matrix, rhs, x, error)
       class(auto_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in), target :: matrix
+      class(system_matrix_t), intent(in), target :: matrix
       real(dp), intent(in), target :: rhs(:)
       real(dp), intent(out), target :: x(:)
       type(error_t), allocatable, intent(out) :: error

@@ -11,9 +11,10 @@ module frix_cholmod_solver
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_system_matrix, only: system_matrix_t
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message, begin_factorize, &
-                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail, failure_of_size, &
+                                 check_solve_sizes, csc_matrix, add_elapsed_seconds, pivot_ratio_detail, failure_of_size, &
                                  solver_not_positive_definite, solver_too_large, solver_out_of_memory, solver_failed
    use frix_metis_ordering, only: metis_dof_permutation
    implicit none
@@ -101,16 +102,21 @@ contains
    !> an error naming the original equation.
    subroutine factorize(solver, matrix, error)
       class(cholmod_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in), target :: matrix
+      class(system_matrix_t), intent(in), target :: matrix
       type(error_t), allocatable, intent(out) :: error
       integer(i8), allocatable :: permutation(:)
       integer(c_int) :: status
       integer(c_int64_t) :: failed
       real(c_double) :: lnz, min_pivot, max_pivot, peak, in_use
       real(dp) :: start
+      type(sparse_matrix_t), pointer :: csc
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
 
       call begin_factorize(solver, matrix, error)
+      if (.not. allocated(error)) call csc_matrix(solver, matrix, csc, error)
       if (allocated(error)) return
+      call csc%csc_arrays(col_ptr, row_index, values)
       if (.not. c_associated(solver%handle)) solver%handle = frix_cholmod_create()
       if (.not. c_associated(solver%handle)) then
          call fatal_error(error, 'CHOLMOD: out of memory creating cholmod_common')
@@ -120,10 +126,10 @@ contains
       if (matrix%pattern_id /= solver%analysed_pattern_id) then
          start = wall_clock_seconds()
          solver%analysed_pattern_id = 0
-         call metis_dof_permutation(matrix, permutation, error)
+         call metis_dof_permutation(csc, permutation, error)
          if (allocated(error)) return
-         status = frix_cholmod_analyse(solver%handle, int(matrix%n, c_int64_t), matrix%col_ptr, matrix%row_index, &
-                                       matrix%values, permutation, lnz)
+         status = frix_cholmod_analyse(solver%handle, int(matrix%n, c_int64_t), col_ptr, row_index, &
+                                       values, permutation, lnz)
          call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status < 0) then
             call cholmod_failure(error, status, 'symbolic analysis', matrix%n, lnz, solver%failure)
@@ -135,8 +141,8 @@ contains
       end if
 
       start = wall_clock_seconds()
-      status = frix_cholmod_factorize(solver%handle, int(matrix%n, c_int64_t), matrix%col_ptr, matrix%row_index, &
-                                      matrix%values, failed, min_pivot, max_pivot)
+      status = frix_cholmod_factorize(solver%handle, int(matrix%n, c_int64_t), col_ptr, row_index, &
+                                      values, failed, min_pivot, max_pivot)
       call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       call frix_cholmod_memory(solver%handle, peak, in_use)
       solver%peak_memory_bytes = int(peak, i8)
@@ -191,7 +197,7 @@ contains
 
    subroutine solve(solver, matrix, rhs, x, error)
       class(cholmod_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in), target :: matrix
+      class(system_matrix_t), intent(in), target :: matrix
       real(dp), intent(in), target :: rhs(:)
       real(dp), intent(out), target :: x(:)
       type(error_t), allocatable, intent(out) :: error

@@ -6,12 +6,13 @@ module frix_linear_solver
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_system_matrix, only: system_matrix_t
    use frix_sparse_matrix, only: sparse_matrix_t
    implicit none
    private
 
    public :: linear_solver_t, wall_clock_seconds, singular_matrix_message
-   public :: begin_factorize, check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail
+   public :: begin_factorize, check_solve_sizes, csc_matrix, add_elapsed_seconds, pivot_ratio_detail
    public :: solver_ok, solver_not_positive_definite, solver_singular, solver_too_large, &
              solver_out_of_memory, solver_failed, failure_of_size
 
@@ -54,6 +55,7 @@ module frix_linear_solver
       procedure(solve_interface), deferred :: solve
       procedure(release_interface), deferred :: release
       !> Called by the Newton loop at the start of every load increment; no-op by default.
+      procedure :: new_matrix
       procedure :: begin_increment
       !> Called by the Newton loop when the matrix about to be factorized is unsymmetric
       !> although the system was expected symmetric; no-op by default.
@@ -76,17 +78,17 @@ module frix_linear_solver
       !> numeric factorization. A singular (or, for Cholesky, not positive definite) matrix
       !> gives an error and sets `failed_equation`.
       subroutine factorize_interface(solver, matrix, error)
-         import :: linear_solver_t, sparse_matrix_t, error_t
+         import :: linear_solver_t, system_matrix_t, error_t
          class(linear_solver_t), intent(inout) :: solver
-         type(sparse_matrix_t), intent(in), target :: matrix
+         class(system_matrix_t), intent(in), target :: matrix
          type(error_t), allocatable, intent(out) :: error
       end subroutine factorize_interface
 
       !> x = A^-1 rhs with the factors of the last successful `factorize` of `matrix`.
       subroutine solve_interface(solver, matrix, rhs, x, error)
-         import :: linear_solver_t, sparse_matrix_t, error_t, dp
+         import :: linear_solver_t, system_matrix_t, error_t, dp
          class(linear_solver_t), intent(inout) :: solver
-         type(sparse_matrix_t), intent(in), target :: matrix
+         class(system_matrix_t), intent(in), target :: matrix
          real(dp), intent(in), target :: rhs(:)        !! (n)
          real(dp), intent(out), target :: x(:)         !! (n)
          type(error_t), allocatable, intent(out) :: error
@@ -100,6 +102,30 @@ module frix_linear_solver
    end interface
 
 contains
+
+   !> A matrix of the storage this solver factorizes, empty (no pattern): the compressed
+   !> sparse columns of frix_sparse_matrix for the direct solvers.
+   subroutine new_matrix(solver, matrix)
+      class(linear_solver_t), intent(in) :: solver
+      class(system_matrix_t), allocatable, intent(out) :: matrix
+      allocate (sparse_matrix_t :: matrix)
+   end subroutine new_matrix
+
+   !> `matrix` as the compressed sparse column matrix a direct solver reads; an error naming
+   !> the solver for any other storage.
+   subroutine csc_matrix(solver, matrix, csc, error)
+      class(linear_solver_t), intent(in) :: solver
+      class(system_matrix_t), intent(in), target :: matrix
+      type(sparse_matrix_t), pointer, intent(out) :: csc
+      type(error_t), allocatable, intent(out) :: error
+      csc => null()
+      select type (matrix)
+      type is (sparse_matrix_t)
+         csc => matrix
+      class default
+         call fatal_error(error, solver%name()//': needs the matrix in compressed sparse columns')
+      end select
+   end subroutine csc_matrix
 
    subroutine begin_increment(solver)
       class(linear_solver_t), intent(inout) :: solver
@@ -137,7 +163,7 @@ contains
    !> equation), and give an error if `matrix` has no pattern.
    subroutine begin_factorize(solver, matrix, error)
       class(linear_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in) :: matrix
+      class(system_matrix_t), intent(in) :: matrix
       type(error_t), allocatable, intent(out) :: error
       solver%failed_equation = 0
       solver%failure = solver_ok
@@ -152,7 +178,7 @@ contains
    !> the right-hand side and solution have its size.
    subroutine check_solve_sizes(solver, matrix, rhs_size, x_size, error)
       class(linear_solver_t), intent(in) :: solver
-      type(sparse_matrix_t), intent(in) :: matrix
+      class(system_matrix_t), intent(in) :: matrix
       integer, intent(in) :: rhs_size   !! size of the right-hand side
       integer, intent(in) :: x_size     !! size of the solution
       type(error_t), allocatable, intent(out) :: error

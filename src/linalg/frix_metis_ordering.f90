@@ -9,7 +9,7 @@
 !> 64-bit interface (`cholmod_l_analyze_p`).
 module frix_metis_ordering
    use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_ptr, c_null_ptr
-   use frix_kinds, only: i8
+   use frix_kinds, only: i8, i4
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_sparse_matrix, only: sparse_matrix_t
@@ -48,25 +48,27 @@ contains
    !> permutation(k+1) = original equation (0-based) eliminated k-th. Node k eliminated
    !> in position m gives DOFs 3*m, 3*m+1, 3*m+2 -> equations 3*(node-1) + 0, 1, 2.
    subroutine metis_dof_permutation(matrix, permutation, error)
-      type(sparse_matrix_t), intent(in) :: matrix
+      type(sparse_matrix_t), intent(in), target :: matrix
       integer(i8), allocatable, intent(out) :: permutation(:)
       type(error_t), allocatable, intent(out) :: error
       integer(c_int32_t), allocatable :: xadj(:), adjncy(:), node_perm(:), node_iperm(:)
       integer(c_int32_t) :: options(metis_noptions), n_vertices
       integer :: a, q, b, count, position
       integer(c_int) :: status
+      integer(i4), pointer, contiguous :: node_ptr(:), node_adj(:)
 
+      call matrix%node_graph(node_ptr, node_adj)
       allocate (permutation(matrix%n))
       n_vertices = int(matrix%n_nodes, c_int32_t)
       allocate (node_perm(max(1, matrix%n_nodes)), node_iperm(max(1, matrix%n_nodes)))
       ! METIS graph: 0-based CSR without self loops
       allocate (xadj(matrix%n_nodes + 1))
-      allocate (adjncy(max(1, size(matrix%node_adj) - matrix%n_nodes)))
+      allocate (adjncy(max(1, size(node_adj) - matrix%n_nodes)))
       position = 0
       xadj(1) = 0
       do a = 1, matrix%n_nodes
-         do q = matrix%node_ptr(a), matrix%node_ptr(a + 1) - 1
-            b = matrix%node_adj(q)
+         do q = node_ptr(a), node_ptr(a + 1) - 1
+            b = node_adj(q)
             if (b == a) cycle
             position = position + 1
             adjncy(position) = int(b - 1, c_int32_t)

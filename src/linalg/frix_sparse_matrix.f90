@@ -1,5 +1,6 @@
-!> Sparse matrix in compressed sparse column (CSC) storage of the FULL pattern (both
-!> triangles), with a node-blocked layout for cheap finite element scatter.
+!> The system matrix (frix_system_matrix) in compressed sparse column (CSC) storage of the
+!> FULL pattern (both triangles), with a node-blocked layout for cheap finite element scatter:
+!> the serial implementation, read by the direct solvers (CHOLMOD, UMFPACK) through `csc_arrays`.
 !>
 !> Equation numbering is node-major with 3 DOFs per node: equation `3*(node-1) + i`,
 !> i = 1, 2, 3 the direction (x, y, z). The CSC index arrays `col_ptr` and `row_index` are
@@ -22,6 +23,8 @@ module frix_sparse_matrix
    use frix_kinds, only: dp, i4, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_finite_check, only: first_non_finite
+   use frix_system_matrix, only: system_matrix_t
    implicit none
    private
 
@@ -31,16 +34,13 @@ module frix_sparse_matrix
    integer, save :: last_pattern_id = 0
 
    !> Square sparse matrix, CSC with full (structurally symmetric) node-block pattern.
-   type :: sparse_matrix_t
-      integer :: n = 0                          !! number of equations (3 * n_nodes)
-      integer :: n_nodes = 0                    !! number of nodes of the node graph
+   type, extends(system_matrix_t) :: sparse_matrix_t
+      private
       integer(i8), allocatable :: col_ptr(:)    !! (0:n) 0-based offsets of the columns
       integer(i8), allocatable :: row_index(:)  !! (nnz) 0-based rows, sorted within a column
       real(dp), allocatable :: values(:)        !! (nnz) entries, same order as row_index
       integer(i4), allocatable :: node_ptr(:)   !! (n_nodes+1) 1-based CSR offsets of the node graph
       integer(i4), allocatable :: node_adj(:)   !! 1-based sorted neighbour lists (node itself included)
-      integer :: pattern_id = 0                 !! changes at every (re)build of the pattern
-      integer(i8) :: dropped_entries = 0        !! entries add_element could not place (no error argument given)
    contains
       procedure :: create_node_block_pattern
       procedure :: zero
@@ -53,8 +53,13 @@ module frix_sparse_matrix
       procedure :: get_diagonal
       procedure :: nnz
       procedure :: memory_bytes
+      procedure :: couples
+      procedure :: move_equation
+      procedure :: first_non_finite_column
       procedure :: neighbour_index
       procedure :: entry_position
+      procedure :: csc_arrays
+      procedure :: node_graph
    end type sparse_matrix_t
 
 contains
@@ -511,4 +516,98 @@ contains
       if (allocated(matrix%node_ptr)) bytes = bytes + 4_i8*size(matrix%node_ptr, kind=i8)
       if (allocated(matrix%node_adj)) bytes = bytes + 4_i8*size(matrix%node_adj, kind=i8)
    end function memory_bytes
+   !> Whether nodes a and b are coupled in the pattern.
+   pure function couples(matrix, a, b) result(coupled)
+      class(sparse_matrix_t), intent(in) :: matrix
+      integer, intent(in) :: a, b
+      logical :: coupled
+      coupled = neighbour_index(matrix, a, b) /= 0
+   end function couples
+
+   !> Row e (`rows`) or column e times weights(k) added to the rows (columns) masters(k), then
+   !> zeroed (frix_system_matrix). The entries of row e are in the columns of the neighbours n
+   !> of e's node s (the pattern is structurally symmetric); those of column e are node s's.
+   subroutine move_equation(matrix, e, masters, weights, rows, missing)
+      class(sparse_matrix_t), intent(inout) :: matrix
+      integer, intent(in) :: e, masters(:)
+      real(dp), intent(in) :: weights(:)
+      logical, intent(in) :: rows
+      integer, intent(out) :: missing(2)
+      integer :: k, n, i, a, s, c, source, target, k_master, master_node, master_direction
+      real(dp) :: value
+      missing = 0
+      s = (e + 2)/3
+      c = e - 3*(s - 1)
+      do k = 1, matrix%node_ptr(s + 1) - matrix%node_ptr(s)
+         n = matrix%node_adj(matrix%node_ptr(s) + k - 1)
+         do i = 1, 3
+            if (rows) then
+               source = entry_position(matrix, n, neighbour_index(matrix, n, s), i, c)
+            else
+               source = entry_position(matrix, s, k, c, i)
+            end if
+            value = matrix%values(source)
+            if (value == 0.0_dp) cycle
+            do a = 1, size(masters)
+               master_node = (masters(a) + 2)/3
+               master_direction = masters(a) - 3*(master_node - 1)
+               if (rows) then
+                  k_master = neighbour_index(matrix, n, master_node)
+               else
+                  k_master = neighbour_index(matrix, master_node, n)
+               end if
+               if (k_master == 0) then
+                  missing = [master_node, n]
+                  return
+               end if
+               if (rows) then
+                  target = entry_position(matrix, n, k_master, i, master_direction)
+               else
+                  target = entry_position(matrix, master_node, k_master, master_direction, i)
+               end if
+               matrix%values(target) = matrix%values(target) + weights(a)*value
+            end do
+            matrix%values(source) = 0.0_dp
+         end do
+      end do
+   end subroutine move_equation
+
+   !> The column of the first stored entry that is not finite (in storage order), 0 if none.
+   subroutine first_non_finite_column(matrix, column, value)
+      class(sparse_matrix_t), intent(in) :: matrix
+      integer, intent(out) :: column
+      real(dp), intent(out) :: value
+      integer :: position
+      column = 0
+      value = 0.0_dp
+      if (.not. allocated(matrix%values)) return
+      position = first_non_finite(matrix%values)
+      if (position == 0) return
+      column = 1
+      do while (matrix%col_ptr(column) < position)   ! column j holds entries col_ptr(j-1)+1 .. col_ptr(j)
+         column = column + 1
+      end do
+      value = matrix%values(position)
+   end subroutine first_non_finite_column
+
+   !> The CSC arrays, for a direct solver's library call: col_ptr(0:n) and row_index (0-based,
+   !> SuiteSparse_long) and values. The matrix must be a TARGET where the pointers are used;
+   !> they stay valid until the pattern is rebuilt.
+   subroutine csc_arrays(matrix, col_ptr, row_index, values)
+      class(sparse_matrix_t), intent(in), target :: matrix
+      integer(i8), pointer, contiguous, intent(out) :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous, intent(out) :: values(:)
+      col_ptr => matrix%col_ptr
+      row_index => matrix%row_index
+      values => matrix%values
+   end subroutine csc_arrays
+
+   !> The node graph in CSR form (1-based, every list sorted and holding the node itself), for
+   !> a fill-reducing ordering of the nodes.
+   subroutine node_graph(matrix, node_ptr, node_adj)
+      class(sparse_matrix_t), intent(in), target :: matrix
+      integer(i4), pointer, contiguous, intent(out) :: node_ptr(:), node_adj(:)
+      node_ptr => matrix%node_ptr
+      node_adj => matrix%node_adj
+   end subroutine node_graph
 end module frix_sparse_matrix

@@ -13,9 +13,10 @@ module frix_umfpack_solver
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
+   use frix_system_matrix, only: system_matrix_t
    use frix_sparse_matrix, only: sparse_matrix_t
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, singular_matrix_message, begin_factorize, &
-                                 check_solve_sizes, add_elapsed_seconds, pivot_ratio_detail, failure_of_size, &
+                                 check_solve_sizes, csc_matrix, add_elapsed_seconds, pivot_ratio_detail, failure_of_size, &
                                  solver_singular, solver_out_of_memory, solver_failed
    implicit none
    private
@@ -142,13 +143,18 @@ contains
    !> gives an error naming the original column of the smallest pivot.
    subroutine factorize(solver, matrix, error)
       class(umfpack_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in), target :: matrix
+      class(system_matrix_t), intent(in), target :: matrix
       type(error_t), allocatable, intent(out) :: error
       integer(c_int64_t) :: status
       real(dp) :: start
+      type(sparse_matrix_t), pointer :: csc
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
 
       call begin_factorize(solver, matrix, error)
+      if (.not. allocated(error)) call csc_matrix(solver, matrix, csc, error)
       if (allocated(error)) return
+      call csc%csc_arrays(col_ptr, row_index, values)
       if (c_associated(solver%numeric)) call umfpack_dl_free_numeric(solver%numeric)
 
       if (matrix%pattern_id /= solver%analysed_pattern_id) then
@@ -159,8 +165,8 @@ contains
          solver%control(umfpack_ordering + 1) = real(solver%ordering, c_double)
          solver%control(umfpack_irstep + 1) = real(solver%refinement_steps, c_double)
          start = wall_clock_seconds()
-         status = umfpack_dl_symbolic(int(matrix%n, c_int64_t), int(matrix%n, c_int64_t), matrix%col_ptr, &
-                                      matrix%row_index, matrix%values, solver%symbolic, solver%control, solver%info)
+         status = umfpack_dl_symbolic(int(matrix%n, c_int64_t), int(matrix%n, c_int64_t), col_ptr, &
+                                      row_index, values, solver%symbolic, solver%control, solver%info)
          call add_elapsed_seconds(start, solver%last_analyse_seconds, solver%analyse_seconds)
          if (status /= umfpack_ok) then
             call umfpack_failure(error, status, 'symbolic analysis', matrix%n, solver%failure)
@@ -171,7 +177,7 @@ contains
       end if
 
       start = wall_clock_seconds()
-      status = umfpack_dl_numeric(matrix%col_ptr, matrix%row_index, matrix%values, solver%symbolic, &
+      status = umfpack_dl_numeric(col_ptr, row_index, values, solver%symbolic, &
                                   solver%numeric, solver%control, solver%info)
       call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       solver%peak_memory_bytes = int(solver%info(umfpack_peak_memory + 1)*solver%info(umfpack_size_of_unit + 1), i8)
@@ -234,17 +240,22 @@ contains
 
    subroutine solve(solver, matrix, rhs, x, error)
       class(umfpack_solver_t), intent(inout) :: solver
-      type(sparse_matrix_t), intent(in), target :: matrix
+      class(system_matrix_t), intent(in), target :: matrix
       real(dp), intent(in), target :: rhs(:)
       real(dp), intent(out), target :: x(:)
       type(error_t), allocatable, intent(out) :: error
       integer(c_int64_t) :: status
       real(dp) :: start
+      type(sparse_matrix_t), pointer :: csc
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
 
       call check_solve_sizes(solver, matrix, size(rhs), size(x), error)
+      if (.not. allocated(error)) call csc_matrix(solver, matrix, csc, error)
       if (allocated(error)) return
+      call csc%csc_arrays(col_ptr, row_index, values)
       start = wall_clock_seconds()
-      status = umfpack_dl_solve(umfpack_system_a, matrix%col_ptr, matrix%row_index, matrix%values, x, rhs, &
+      status = umfpack_dl_solve(umfpack_system_a, col_ptr, row_index, values, x, rhs, &
                                 solver%numeric, solver%control, solver%info)
       call add_elapsed_seconds(start, solver%last_solve_seconds, solver%solve_seconds, solver%n_solves)
       if (status /= umfpack_ok) call fatal_error(error, 'UMFPACK: solve failed, status '//to_string(int(status)))

@@ -30,13 +30,13 @@ endforeach()
 add_test(NAME contact_s3_coarse_mu0.1_continuation
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.1_continuation.dck 1101 0.1
                  --stop-between 0.785 0.7945 --expect-log "friction continuation: mu x")
-set_tests_properties(contact_s3_coarse_mu0.1_continuation PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_600})
+set_tests_properties(contact_s3_coarse_mu0.1_continuation PROPERTIES LABELS "regression;contact;long" TIMEOUT ${scaled_600})
 
 # Without friction the coarse model has a limit point at t = 0.6106: path following (CONTROL
 # Path on the punch corner's z displacement) passes it and ends on the falling branch (25 s).
 add_test(NAME contact_s3_coarse_mu0_path
          COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0_path.dck --path-limit 0.61067)
-set_tests_properties(contact_s3_coarse_mu0_path PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_300})
+set_tests_properties(contact_s3_coarse_mu0_path PROPERTIES LABELS "regression;contact;long" TIMEOUT ${scaled_300})
 # With mu = 0.1 the facet model's maximum is t = 0.7919, below the full load: why facet
 # normals cannot pass (11 min: slow).
 add_test(NAME contact_s3_coarse_mu0.1_path

@@ -34,20 +34,25 @@ contains
    !> others see the 8 nodes of their element. Sum of degrees 4*12 + 8*8 = 112, nnz = 9*112.
    subroutine test_two_element_pattern_counts(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
+      integer(i4), pointer, contiguous :: node_ptr(:), node_adj(:)
       integer, allocatable :: connectivity(:, :)
       integer :: n_nodes, a, degree, shared
       call cube_connectivity(2, 1, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
+      call matrix%csc_arrays(col_ptr, row_index, values)
+      call matrix%node_graph(node_ptr, node_adj)
       call check(error, matrix%n == 36, 'n = 3 * 12 nodes')
       if (allocated(error)) return
       call check(error, matrix%nnz() == 1008_i8, 'nnz = 9 * (4*12 + 8*8) = 1008')
       if (allocated(error)) return
-      call check(error, matrix%col_ptr(matrix%n) == 1008, 'col_ptr(n) = nnz')
+      call check(error, col_ptr(matrix%n) == 1008, 'col_ptr(n) = nnz')
       if (allocated(error)) return
       shared = 0
       do a = 1, n_nodes
-         degree = matrix%node_ptr(a + 1) - matrix%node_ptr(a)
+         degree = node_ptr(a + 1) - node_ptr(a)
          if (degree == 12) shared = shared + 1
          call check(error, degree == 12 .or. degree == 8, 'degree is 8 or 12')
          if (allocated(error)) return
@@ -55,7 +60,7 @@ contains
       call check(error, shared == 4, 'four nodes on the shared face have degree 12')
       if (allocated(error)) return
       ! the shared face nodes are i = 1 of the 3 x 2 x 2 grid: 2, 5, 8, 11
-      call check(error, all(matrix%node_ptr([3, 6, 9, 12]) - matrix%node_ptr([2, 5, 8, 11]) == 12), &
+      call check(error, all(node_ptr([3, 6, 9, 12]) - node_ptr([2, 5, 8, 11]) == 12), &
                  'shared nodes 2, 5, 8, 11 have degree 12')
    end subroutine test_two_element_pattern_counts
 
@@ -64,28 +69,33 @@ contains
    !> row 3(b-1)+j-1 (0-based); rows strictly increase inside every column.
    subroutine test_position_formula(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
+      integer(i4), pointer, contiguous :: node_ptr(:), node_adj(:)
       integer, allocatable :: connectivity(:, :)
       integer :: n_nodes, a, b, k, i, j, degree, p, column
       call cube_connectivity(2, 2, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity, extra_pairs=reshape([1, 18], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
+      call matrix%node_graph(node_ptr, node_adj)
       do a = 1, n_nodes
-         degree = matrix%node_ptr(a + 1) - matrix%node_ptr(a)
+         degree = node_ptr(a + 1) - node_ptr(a)
          do i = 1, 3
             column = 3*(a - 1) + i
-            call check(error, matrix%col_ptr(column - 1) == 9*(matrix%node_ptr(a) - 1) + 3*degree*(i - 1), &
+            call check(error, col_ptr(column - 1) == 9*(node_ptr(a) - 1) + 3*degree*(i - 1), &
                        'col_ptr formula')
             if (allocated(error)) return
             do k = 1, degree
-               b = matrix%node_adj(matrix%node_ptr(a) + k - 1)
+               b = node_adj(node_ptr(a) + k - 1)
                call check(error, matrix%neighbour_index(a, b) == k, 'neighbour_index finds k')
                if (allocated(error)) return
                do j = 1, 3
-                  p = 9*(matrix%node_ptr(a) - 1) + 3*degree*(i - 1) + 3*(k - 1) + (j - 1)
-                  call check(error, p >= matrix%col_ptr(column - 1) .and. p < matrix%col_ptr(column), &
+                  p = 9*(node_ptr(a) - 1) + 3*degree*(i - 1) + 3*(k - 1) + (j - 1)
+                  call check(error, p >= col_ptr(column - 1) .and. p < col_ptr(column), &
                              'position inside its column')
                   if (allocated(error)) return
-                  call check(error, matrix%row_index(p + 1) == 3*(b - 1) + j - 1, 'row index at position')
+                  call check(error, row_index(p + 1) == 3*(b - 1) + j - 1, 'row index at position')
                   if (allocated(error)) return
                   call check(error, matrix%entry_position(a, k, i, j) == p + 1, 'entry_position = p + 1')
                   if (allocated(error)) return
@@ -94,8 +104,8 @@ contains
          end do
       end do
       do column = 1, matrix%n
-         do p = int(matrix%col_ptr(column - 1)) + 2, int(matrix%col_ptr(column))
-            call check(error, matrix%row_index(p) > matrix%row_index(p - 1), 'rows sorted in every column')
+         do p = int(col_ptr(column - 1)) + 2, int(col_ptr(column))
+            call check(error, row_index(p) > row_index(p - 1), 'rows sorted in every column')
             if (allocated(error)) return
          end do
       end do
@@ -105,7 +115,9 @@ contains
    !> dense assembly (same additions in the same order), including 0 outside the pattern.
    subroutine test_add_element_reads_back(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
       integer, allocatable :: connectivity(:, :)
       real(dp), allocatable :: dense(:, :)
       real(dp) :: block(24, 24)
@@ -113,6 +125,7 @@ contains
       integer :: n_nodes, e, row, column
       call cube_connectivity(2, 1, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
+      call matrix%csc_arrays(col_ptr, row_index, values)
       allocate (dense(matrix%n, matrix%n), source=0.0_dp)
       state = 12345
       do e = 1, size(connectivity, 2)
@@ -133,7 +146,7 @@ contains
       call check(error, count(dense /= 0.0_dp) == 1008, 'the random blocks fill the whole pattern')
       if (allocated(error)) return
       call matrix%zero()
-      call check(error, all(matrix%values == 0.0_dp), 'zero() clears the values')
+      call check(error, all(values == 0.0_dp), 'zero() clears the values')
    end subroutine test_add_element_reads_back
 
    !> Extra pair (1, 3) couples two nodes of different elements: 2 new 3x3 blocks (18 entries).
@@ -305,17 +318,21 @@ contains
 
    subroutine test_pattern_id(error)
       type(error_t), allocatable, intent(out) :: error
-      type(sparse_matrix_t) :: matrix
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
       integer :: first
       call matrix%create_node_block_pattern(2, reshape([1, 2], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
       first = matrix%pattern_id
       call check(error, first > 0, 'pattern_id positive after a build')
       if (allocated(error)) return
-      matrix%values = 1.0_dp
+      values = 1.0_dp
       call matrix%create_node_block_pattern(2, reshape([1, 2], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
       call check(error, matrix%pattern_id /= first, 'rebuilding the same pattern changes pattern_id')
       if (allocated(error)) return
-      call check(error, all(matrix%values == 0.0_dp), 'a rebuild reusing the storage zeroes the values')
+      call check(error, all(values == 0.0_dp), 'a rebuild reusing the storage zeroes the values')
       if (allocated(error)) return
       call check(error, matrix%memory_bytes() == 8_i8*36 + 8_i8*36 + 8_i8*7 + 4_i8*3 + 4_i8*4, &
                  'memory_bytes = values + row_index + col_ptr + node_ptr + node_adj')
