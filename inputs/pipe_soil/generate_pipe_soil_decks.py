@@ -28,6 +28,7 @@ Python standard library only. Writes pipe_<full|half>_<tiny|coarse>.inp and the 
 pipe_<sand|clay>_<lateral|uplift>[_<variant>].dck listed in DECKS.
 """
 import argparse
+import csv
 import math
 import pathlib
 import sys
@@ -68,6 +69,7 @@ DECKS = {
     "pipe_sand_uplift_tiny_free": ("sand", "uplift", 0.03, 10, {"free": True}, "tiny"),
     "pipe_clay_uplift_tiny_free": ("clay", "uplift", 0.05, 10, {"free": True}, "tiny"),
     "pipe_sand_uplift_tiny_psi5": ("sand", "uplift", 0.03, 10, {"psi": 5.0}, "tiny"),
+    "pipe_sand_uplift_tiny_psi5_free": ("sand", "uplift", 0.03, 10, {"psi": 5.0, "free": True}, "tiny"),
     "pipe_sand_lateral_tiny_psi5": ("sand", "lateral", 0.06, 12, {"psi": 5.0}, "tiny"),
     "pipe_sand_lateral_tiny_eas0": ("sand", "lateral", 0.06, 12, {"eas": 0}, "tiny"),
     "pipe_sand_uplift_smooth": ("sand", "uplift", 0.05, 40, {"mu": 0.0}, "coarse"),
@@ -122,6 +124,26 @@ def free_pull_force(soil, direction):
     so that the load factor stays below 1 over step 2."""
     factor = 2 if direction == "uplift" else 1
     return 2 * design_band(soil, direction)[1] * THICKNESS / factor
+
+
+def pull_history(out, base, first=1.0 + 1e-12):
+    """Step 2 of a run of deck `base` from OUT/base_history.csv (the rows from time `first` on;
+    first = 1: with the end of step 1): a list of (row, displacement of the pipe in m, pull on
+    the model's slab in kN, force per metre of pipe in kN/m). The pull is the reference node's
+    reaction, or the applied force F (t - 1) of a `free` deck."""
+    soil, direction, displacement, _, overrides, _ = DECKS[base]
+    dof, factor = (3, 2.0) if direction == "uplift" else (1, 1.0)
+    with open(pathlib.Path(out) / f"{base}_history.csv") as f:
+        rows = [r for r in csv.DictReader(f) if float(r["time"]) >= first]
+    history = []
+    for r in rows:
+        t = float(r["time"])
+        if overrides.get("free", False):
+            pull, moved = free_pull_force(soil, direction) * (t - 1.0), float(r["u%d_n%d" % (dof, REF_NODE)])
+        else:
+            pull, moved = float(r["r%d_n%d" % (dof, REF_NODE)]), displacement * (t - 1.0)
+        history.append((r, moved, pull, factor * pull / THICKNESS))
+    return history
 
 
 def soil_weight(mesh_name, half):

@@ -10,7 +10,6 @@ Each RUN_DIR is a frix output folder of a deck of this folder, named as the deck
 --mechanism: one panel per run, the equivalent plastic strain (element means) of the last
 .vtu of step 2 on the cross-section near the pipe (the plastic zone at the plateau).
 """
-import csv
 import pathlib
 import sys
 
@@ -28,13 +27,8 @@ import frix_results  # noqa: E402
 
 def curve(run):
     """Displacement (mm) and force per metre of pipe (kN/m) of step 2, from 0."""
-    soil, direction, displacement, _, _, _ = g.DECKS[run.name]
-    dof, factor = (3, 2.0) if direction == "uplift" else (1, 1.0)
-    with open(run / f"{run.name}_history.csv") as f:
-        rows = [r for r in csv.DictReader(f) if float(r["time"]) >= 1.0]
-    u = [1000 * displacement * (float(r["time"]) - 1.0) for r in rows]
-    p = [factor * float(r["r%d_n%d" % (dof, g.REF_NODE)]) / g.THICKNESS for r in rows]
-    return u, p
+    history = g.pull_history(run, run.name, first=1.0)
+    return [1000 * h[1] for h in history], [h[3] for h in history]
 
 
 def mechanism(out, runs, eqps_max=0.05):
@@ -91,7 +85,8 @@ def main():
         axis.set_ylabel("force per metre of pipe (kN/m)")
         axis.set_ylim(0, 1.1 * high)
         axis.grid(alpha=0.3)
-        axis.legend(fontsize=7, loc="lower right")
+        entries = len(axis.get_legend_handles_labels()[1])
+        axis.legend(fontsize=6 if entries > 6 else 7, loc="lower right", ncol=2 if entries > 6 else 1)
     figure.tight_layout()
     figure.savefig(out, dpi=110)
     print("wrote", out)

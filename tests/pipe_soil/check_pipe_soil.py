@@ -17,7 +17,6 @@ The deck BASE names its soil, direction and mesh (generate_pipe_soil_decks.DECKS
   soil's weight (to 1e-6 of it).
 Prints the numbers; exit status 0 when every check holds.
 """
-import csv
 import pathlib
 import sys
 
@@ -31,16 +30,10 @@ def main():
     half = direction == "uplift"
     free = overrides.get("free", False)
     dof, factor = (3, 2.0) if half else (1, 1.0)
-    with open(pathlib.Path(out) / f"{base}_history.csv") as f:
-        rows = [r for r in csv.DictReader(f) if float(r["time"]) > 1.0 + 1e-12]
+    history = g.pull_history(out, base)
+    rows = [h[0] for h in history]
     times = [float(r["time"]) for r in rows]
-    if free:  # the pull is the applied force F (t - 1); the pipe's displacement drives the step
-        pull = [g.free_pull_force(soil, direction) * (t - 1.0) for t in times]
-        moved = [float(r["u%d_n%d" % (dof, g.REF_NODE)]) for r in rows]
-    else:     # the pull is the reaction of the reference node, moved by F f(t)
-        pull = [float(r["r%d_n%d" % (dof, g.REF_NODE)]) for r in rows]
-        moved = [displacement * (t - 1.0) for t in times]
-    force = [factor * q / g.THICKNESS for q in pull]
+    moved, pull, force = ([h[k] for h in history] for k in (1, 2, 3))
     plateau = force[-1]
     failures = []
     if not free and abs(times[-1] - 2.0) > 1e-12:
@@ -56,6 +49,8 @@ def main():
     vertical = max(abs(float(r["r3_sum_bottom"]) + q - weight) for q, r in zip(lift, rows))
     print("plateau P = %.2f kN/m after %.0f mm; change over the last quarter %.2f %% (tolerance %.1f %%)"
           % (plateau, 1000 * moved[-1], 100 * change, 100 * tolerance))
+    peak = max(force, key=abs)
+    print("peak %.2f kN/m after %.0f mm" % (peak, 1000 * moved[force.index(peak)]))
     for name, (value, text) in g.design_resistances(soil, direction).items():
         print("  %-22s %7.2f kN/m (%s): P / design = %.3f" % (name, value, text, plateau / value))
     print("band %.2f ... %.2f kN/m; statics: pipe vs contact %.1e, vertical %.1e of the weight"
