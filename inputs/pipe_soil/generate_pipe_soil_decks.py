@@ -50,11 +50,17 @@ MESHES = {"tiny": (4, 3, 8, 4), "coarse": (8, 5, 10, 6)}
 # soils: MAT_3DMohrCoulomb properties (kPa, degrees); pipe-soil friction coefficient
 SOILS = {
     # sand: phi = 35 degrees; a small cohesion (1 kPa) keeps the surface elements off the apex;
-    # E = 30 MPa (a medium dense sand), nu = 0.3 (K0 = nu / (1 - nu) = 0.43 = 1 - sin 35 deg)
+    # E = 30 MPa (a medium dense sand), nu = 0.3 (K0 = nu / (1 - nu) = 0.43 = 1 - sin 35 deg);
+    # mu = tan(f phi), f = 0.7: ALA's coating factor of smooth steel; PENALTY_FACTOR 1: with the
+    # default 10 the contact status chattered where the soil separates (docs/verification/pipe_soil.md)
     "sand": dict(young=3.0e4, nu=0.3, cohesion=1.0, phi=35.0, psi=35.0, mu=math.tan(math.radians(0.7 * 35.0)),
                  penalty_factor=1.0),
-    # undrained clay: Tresca (phi = 0) with c = c_u = 50 kPa, E = 500 c_u, nu = 0.49
-    "clay": dict(young=2.5e4, nu=0.49, cohesion=50.0, phi=0.0, psi=0.0, mu=0.5, penalty_factor=1.0),
+    # undrained clay: Tresca (phi = 0) with c = c_u = 50 kPa, E = 500 c_u, nu = 0.49; mu = 0.5 on
+    # the total pressure (in front of the pipe mu p > c_u: the interface is as rough as the clay)
+    # MAXITER 60: Newton needs 15-20 iterations near the plateau, and a cut increment grows back
+    # only after increments of at most MAXITER / 3 iterations (docs/solver.md)
+    "clay": dict(young=2.5e4, nu=0.49, cohesion=50.0, phi=0.0, psi=0.0, mu=0.5, penalty_factor=1.0,
+                 maxiter=60),
 }
 # deck name: (soil, direction, displacement in m, increments, soil overrides, mesh)
 DECKS = {
@@ -336,7 +342,7 @@ def deck_text(name, soil_name, direction, displacement, increments, overrides, m
 PROBLEMTYP   Structure
 --------------------------------------------------------------STATIC
 KINTYP       Geo_Lin
-MAXITER      30
+MAXITER      {s.get('maxiter', 30)}
 MAXCUT       8
 TOLRESID     1.0e-6
 TOLDISP      1.0e-6

@@ -24,8 +24,8 @@ foreach(deck pipe_sand_uplift_tiny pipe_sand_uplift_tiny_free pipe_clay_uplift_t
   pipe_soil_test(${deck} 0.02 "regression;plasticity" ${scaled_300})
 endforeach()
 
-# Slow: the coarse meshes (m = 8; 300 soil HEX8 in the half model), 40 increments, 25-40 s CPU
-# (sand uplift 21.64, smooth 19.73, clay uplift CLAY_UP kN/m), and the tiny decks that cut back
+# Slow: the coarse meshes (m = 8; 300 soil HEX8 in the half model), 40 increments, 25-95 s CPU
+# (sand uplift 21.64, smooth 19.73, clay uplift 93.13 kN/m, peak 97.96), and the tiny decks that cut back
 # often where soil elements reach the cone's apex (docs/verification/pipe_soil.md): sand
 # lateral (107.85, band 65.1-120.8; 12 cut-backs, 30 s), sand uplift with psi = 5 degrees
 # (16.71; 58 cut-backs, 25 s), clay uplift with the pipe free in the geostatic step (98.67).
