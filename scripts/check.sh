@@ -12,10 +12,14 @@
 #       fails its test; so does a floating-point trap (SIGFPE) or a runtime check. Prints the
 #       wall time. Exit status: ctest's (0 when every test passed).
 #       Example: scripts/check.sh sanitize -R unit_io     (only the matching tests)
+#   scripts/check.sh petsc [extra ctest arguments]
+#       Installs Debian's PETSc (scripts/setup.sh --petsc), builds frix with it in build-petsc
+#       and runs the tests labelled petsc there (SOLVER Petsc against the deck's own solver,
+#       tests/solver/petsc.cmake). Prints the wall time.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
-usage() { echo "usage: $0 sanitize [extra ctest arguments]" >&2; exit 2; }
+usage() { echo "usage: $0 sanitize|petsc [extra ctest arguments]" >&2; exit 2; }
 [ $# -ge 1 ] || usage
 mode=$1
 shift
@@ -35,6 +39,17 @@ case "$mode" in
     (cd "$build_dir" && ctest --output-on-failure -LE "slow|long" -j2 "$@") || status=$?
     end=$(date +%s)
     echo "check.sh sanitize: build $((built - start)) s, tests $((end - built)) s, wall time $((end - start)) s"
+    exit $status
+    ;;
+  petsc)
+    start=$(date +%s)
+    build_dir=$root/build-petsc
+    FRIX_BUILD_TARGET=frix "$root/scripts/setup.sh" --petsc "$build_dir" Release
+    built=$(date +%s)
+    status=0
+    (cd "$build_dir" && ctest --output-on-failure -L petsc -j2 "$@") || status=$?
+    end=$(date +%s)
+    echo "check.sh petsc: build $((built - start)) s, tests $((end - built)) s, wall time $((end - start)) s"
     exit $status
     ;;
   *)

@@ -160,7 +160,7 @@ endforeach()
 foreach(case contact_s1/s1 contact_s4/s4 contact_s4/s4_tl contact_v5v6/v5v6 contact_s3/s3
              contact_s5/s5 contact_autopenalty/autopenalty contact_s6/s6 contact_s2/s2
              contact_free_edge/free_edge
-             contact_robustness/robustness contact_mortar/mortar)
+             contact_robustness/robustness contact_mortar/mortar contact_ironing/ironing)
   include(${CMAKE_CURRENT_SOURCE_DIR}/${case}.cmake OPTIONAL)
 endforeach()
 
@@ -277,3 +277,5 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/soil/soil.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/footing/footing.cmake)
 # A buried pipe pulled through sand and clay against ALA and DNV (tests/pipe_soil).
 include(${CMAKE_CURRENT_SOURCE_DIR}/pipe_soil/pipe_soil.cmake)
+# SOLVER Petsc (tests/solver/petsc.cmake).
+include(${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc.cmake)

@@ -1,5 +1,5 @@
 #!/bin/bash
-# compare.sh OLD NEW [--rel R] [--abs A]
+# compare.sh OLD NEW [--rel R] [--abs A] [--floor F]
 #
 # Compare two frix listings (docs/listing-format.md) block by block with Debian's numdiff.
 #   - Lines starting with '#' and blank lines are ignored (run header, dates, paths).
@@ -15,22 +15,26 @@
 #     not set the scale, and with the default tolerances effectively have to match exactly.
 #   - Defaults: R = 1e-6, A = 1e-9. A block whose OLD reals are all zero gets an absolute
 #     tolerance of 0.
+#   - --floor F: the absolute tolerance is at least F (for blocks whose values are round-off
+#     around zero, such as a sum of reactions of 1e-15 where two solvers round differently).
 # Exit status: 0 equal within tolerance, 1 different (the first differences are printed with
 # block title and line numbers of both files), 2 usage error, missing file or missing numdiff.
 set -u
 
 usage() {
-    echo "usage: compare.sh OLD NEW [--rel R] [--abs A]   (defaults: --rel 1e-6 --abs 1e-9)" >&2
+    echo "usage: compare.sh OLD NEW [--rel R] [--abs A] [--floor F]   (defaults: --rel 1e-6 --abs 1e-9 --floor 0)" >&2
     exit 2
 }
 
 rel=1e-6
 abs=1e-9
+floor=0
 files=()
 while [ $# -gt 0 ]; do
     case "$1" in
         --rel) [ $# -ge 2 ] || usage; rel=$2; shift 2 ;;
         --abs) [ $# -ge 2 ] || usage; abs=$2; shift 2 ;;
+        --floor) [ $# -ge 2 ] || usage; floor=$2; shift 2 ;;
         -h | --help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
         -*) echo "compare.sh: unknown option $1" >&2; usage ;;
         *) files+=("$1"); shift ;;
@@ -39,7 +43,7 @@ done
 [ ${#files[@]} -eq 2 ] || usage
 old=${files[0]}
 new=${files[1]}
-for value in "$rel" "$abs"; do
+for value in "$rel" "$abs" "$floor"; do
     if ! awk -v v="$value" 'BEGIN { exit !(v ~ /^[+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/) }'; then
         echo "compare.sh: tolerance '$value' is not a non-negative number" >&2
         exit 2
@@ -112,7 +116,7 @@ failed=0
 count=$((old_count < new_count ? old_count : new_count))
 for ((n = 0; n < count; n++)); do
     scale=$(cat "$work/old.$n.scale")
-    block_abs=$(awk -v a="$abs" -v s="$scale" 'BEGIN { printf "%.10e", a * s }')
+    block_abs=$(awk -v a="$abs" -v s="$scale" -v f="$floor" 'BEGIN { t = a * s; if (t < f) t = f; printf "%.10e", t }')
     scale_text=$(awk -v s="$scale" 'BEGIN { printf "%.6g", s }')
     numdiff -a "$block_abs" -r "$rel" -F 1 "$work/old.$n" "$work/new.$n" > "$work/report" 2>&1
     result=$?

@@ -6,6 +6,7 @@ module frix_external_loads
    use frix_model, only: model_t, curve_factor
    use frix_system_matrix, only: system_matrix_t
    use frix_surface_load, only: pressure_load
+   use frix_cell_registry, only: cell_entry_t, cell_table, find_in_table
    implicit none
    private
 
@@ -26,11 +27,12 @@ contains
       real(dp), intent(out) :: fext(:)
       class(system_matrix_t), intent(inout), optional :: matrix
       real(dp), intent(in), optional :: step_window(2)
-      integer :: i, k, a, node, e, face, equation
-      real(dp) :: factor, coords(3, 4), displacement(3, 4), force(12), stiffness(12, 12)
-      real(dp) :: weights(8)
-      real(dp), allocatable :: element_coords(:, :)
-      integer :: face_nodes(4)
+      integer :: i, k, a, node, e, face, equation, face_cell
+      real(dp) :: factor
+      real(dp), allocatable :: element_coords(:, :), weights(:), coords(:, :), displacement(:, :), force(:), &
+                               stiffness(:, :)
+      integer, allocatable :: face_nodes(:)
+      type(cell_entry_t), allocatable :: table(:)
 
       fext = 0.0_dp
       if (allocated(model%nodal_forces)) then
@@ -46,6 +48,7 @@ contains
       end if
 
       if (allocated(model%pressures)) then
+         table = cell_table()
          do i = 1, size(model%pressures)
             associate (load => model%pressures(i), &
                        surface => model%mesh%surfaces(model%pressures(i)%surface))
@@ -55,13 +58,16 @@ contains
                   e = surface%elements(k)
                   face = surface%faces(k)
                   face_nodes = model%mesh%face_nodes(e, face)
-                  do a = 1, 4
+                  face_cell = find_in_table(table, table(model%mesh%cell_of(e))%cell%face_cell)
+                  call face_arrays(size(face_nodes))
+                  do a = 1, size(face_nodes)
                      node = face_nodes(a)
                      coords(:, a) = model%mesh%coords(:, node)
                      displacement(:, a) = u(3*node - 2:3*node)
                   end do
-                  call pressure_load(coords, displacement, factor, load%follower, force, stiffness)
-                  do a = 1, 4
+                  call pressure_load(table(face_cell)%cell, coords, displacement, factor, load%follower, force, &
+                                     stiffness)
+                  do a = 1, size(face_nodes)
                      node = face_nodes(a)
                      fext(3*node - 2:3*node) = fext(3*node - 2:3*node) + force(3*a - 2:3*a)
                   end do
@@ -84,6 +90,8 @@ contains
                      associate (element => block%element%formulation, &
                                 density => model%materials(block%material)%law%density)
                         element_coords = model%mesh%coords(:, model%mesh%element_nodes(e))
+                        if (allocated(weights)) deallocate (weights)
+                        allocate (weights(model%mesh%node_count(e)))
                         call element%volume_weights(element_coords, weights)
                         do a = 1, model%mesh%node_count(e)
                            node = model%mesh%connectivity(a, e)
@@ -97,6 +105,16 @@ contains
          end do
       end if
    contains
+      !> coords, displacement, force and stiffness sized for a face of n nodes.
+      subroutine face_arrays(n)
+         integer, intent(in) :: n
+         if (allocated(coords)) then
+            if (size(coords, 2) == n) return
+            deallocate (coords, displacement, force, stiffness)
+         end if
+         allocate (coords(3, n), displacement(3, n), force(3*n), stiffness(3*n, 3*n))
+      end subroutine face_arrays
+
       !> The factor of `curve` at `time` (see above for `step_window`).
       real(dp) function load_factor(curve)
          integer, intent(in) :: curve

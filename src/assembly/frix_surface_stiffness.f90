@@ -43,8 +43,9 @@ contains
       integer, intent(in) :: face      !! local face number
       real(dp) :: coords(3, 8), weights(8), area_weights(4), volume, area, scale, modulus, ratio
       integer :: block
+      ! contact faces are HEX8 faces (frix_deck_contact rejects other cells)
       block = model%mesh%element_block(element)
-      coords = model%mesh%coords(:, model%mesh%connectivity(:, element))
+      coords = model%mesh%coords(:, model%mesh%connectivity(1:8, element))
       ! A/V from the element scaled to unit size (no overflow or underflow for any finite
       ! coordinates), then A/V = (A'/V') / scale; a degenerate element gives 0, a value beyond
       ! the range of reals huge(): the caller reports either

@@ -7,10 +7,11 @@ module frix_cell_registry
    use frix_tet4_cell, only: new_tet4_cell
    use frix_tri3_cell, only: new_tri3_cell
    use frix_tet10_cell, only: new_tet10_cell
+   use frix_tri6_cell, only: new_tri6_cell
    implicit none
    private
 
-   public :: cell_table, find_cell, cell_names, hex8_cell_index
+   public :: cell_table, find_cell, find_in_table, cell_names, max_cell_nodes, hex8_cell_index
 
    !> The line of HEX8 in cell_table(): a mesh built without cell types is HEX8 (frix_mesh).
    integer, parameter :: hex8_cell_index = 1
@@ -25,12 +26,13 @@ contains
    !> Every known cell, one line each.
    function cell_table() result(table)
       type(cell_entry_t), allocatable :: table(:)
-      allocate (table(5))
+      allocate (table(6))
       allocate (table(1)%cell, source=new_hex8_cell())
       allocate (table(2)%cell, source=new_quad4_cell())
       allocate (table(3)%cell, source=new_tet4_cell())
       allocate (table(4)%cell, source=new_tri3_cell())
       allocate (table(5)%cell, source=new_tet10_cell())
+      allocate (table(6)%cell, source=new_tri6_cell())
    end function cell_table
 
    !> The cell with `name` (upper case), VTK code `vtk_type` or gmsh code `gmsh_type`, whichever
@@ -54,6 +56,28 @@ contains
          end if
       end do
    end subroutine find_cell
+
+   !> The line of the cell called `name` in `table` (a cell_table()), 0 if none.
+   pure integer function find_in_table(table, name) result(index_found)
+      type(cell_entry_t), intent(in) :: table(:)
+      character(len=*), intent(in) :: name
+      integer :: k
+      index_found = 0
+      do k = 1, size(table)
+         if (table(k)%cell%name == name) index_found = k
+      end do
+   end function find_in_table
+
+   !> The most nodes of any known cell.
+   integer function max_cell_nodes()
+      type(cell_entry_t), allocatable :: table(:)
+      integer :: k
+      table = cell_table()
+      max_cell_nodes = 0
+      do k = 1, size(table)
+         max_cell_nodes = max(max_cell_nodes, table(k)%cell%n_nodes)
+      end do
+   end function max_cell_nodes
 
    !> The names of the known cells, blank-separated (for messages).
    function cell_names() result(names)

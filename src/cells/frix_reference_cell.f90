@@ -4,7 +4,7 @@
 !> nodes in outward orientation and the faces' own cell type), its Gauss rule, its codes in
 !> VTK, gmsh and POS3D, its shape functions and the extrapolation of integration-point values
 !> to its nodes. One concrete cell per file (frix_hex8_cell, frix_quad4_cell,
-!> frix_tet4_cell, frix_tri3_cell), listed in
+!> frix_tet4_cell, frix_tri3_cell, frix_tet10_cell, frix_tri6_cell), listed in
 !> frix_cell_registry.
 module frix_reference_cell
    use frix_kinds, only: dp
@@ -29,6 +29,9 @@ module frix_reference_cell
       integer :: rule_degree = 0
       integer :: vtk_type = 0                        !! VTK cell type code
       integer :: gmsh_type = 0                       !! gmsh element type code
+      !> Local node a is node gmsh_nodes(a) of a gmsh element of the cell's type (not allocated:
+      !> the same order)
+      integer, allocatable :: gmsh_nodes(:)
       character(len=:), allocatable :: pos3d_name    !! POS3D %ELEMENT.<name>, '' if none
    contains
       procedure(shape_interface), deferred :: shape_functions

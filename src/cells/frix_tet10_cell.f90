@@ -5,11 +5,15 @@
 !> no POS3D name. Faces: 6-node triangles (TRI6), corners first.
 !>
 !> Local node order is VTK's (= Abaqus C3D10): corners 1-4 as TET4 (frix_tet4_cell), then the
-!> mid-edge nodes 5: 1-2, 6: 2-3, 7: 3-1, 8: 1-4, 9: 2-4, 10: 3-4. gmsh's type 11 lists the
-!> last two the other way round (9: 3-4, 10: 2-4): a reader swaps them.
+!> mid-edge nodes 5: 1-2, 6: 2-3, 7: 3-1, 8: 1-4, 9: 2-4, 10: 3-4. Sources: VTK's
+!> vtkQuadraticTetra (mid-edge points 4-9 on the edges (0,1), (1,2), (2,0), (0,3), (1,3),
+!> (2,3)); Abaqus Analysis User's Guide, "Three-dimensional solid element library", and the
+!> CalculiX User's Manual, C3D10 (the same). gmsh's type 11 (Gmsh Reference Manual, "Node
+!> ordering", Tetrahedron10, and a tetrahedron meshed by gmsh 4.8.4 checked node by node)
+!> lists the last two the other way round (9: 3-4, 10: 2-4): `gmsh_nodes` swaps them.
 !> With barycentric coordinates L_1 = 1 - xi - eta - zeta, L_2 = xi, L_3 = eta, L_4 = zeta:
 !> N_a = L_a (2 L_a - 1) at corner a, N_m = 4 L_i L_j at the node m on edge i-j
-!> (Zienkiewicz & Taylor, vol. 1, 8.8.2).
+!> (Zienkiewicz & Taylor, vol. 1, 8.8.2; frix_quadratic_simplex).
 !> Local faces (TRI6: corners counter-clockwise seen from outside, then the mid-edge nodes of
 !> their edges 1-2, 2-3, 3-1), in the order of Abaqus' S1-S4 as TET4's:
 !>   1: (1 3 2 7 6 5)   2: (1 2 4 5 9 8)   3: (2 3 4 6 10 9)   4: (3 1 4 7 8 10)
@@ -18,10 +22,11 @@
 module frix_tet10_cell
    use frix_kinds, only: dp
    use frix_reference_cell, only: reference_cell_t
+   use frix_quadratic_simplex, only: quadratic_simplex_shape
    implicit none
    private
 
-   public :: tet10_cell_t, new_tet10_cell
+   public :: tet10_cell_t, new_tet10_cell, tet10_gmsh_type
 
    !> Codes of the cell in VTK (VTK_QUADRATIC_TETRA) and gmsh (element type 11, nodes 9 and 10 swapped).
    integer, parameter :: tet10_vtk_type = 24, tet10_gmsh_type = 11
@@ -68,6 +73,7 @@ contains
       allocate (cell%weights(4), source=1.0_dp/24.0_dp)
       cell%vtk_type = tet10_vtk_type
       cell%gmsh_type = tet10_gmsh_type
+      cell%gmsh_nodes = [1, 2, 3, 4, 5, 6, 7, 8, 10, 9]
       cell%pos3d_name = ''
    end function new_tet10_cell
 
@@ -82,19 +88,8 @@ contains
       real(dp), intent(in) :: xi(:)
       real(dp), intent(out) :: values(:)
       real(dp), intent(out) :: derivatives(:, :)
-      real(dp) :: l(4)
-      integer :: a, m, i, j
-      l = barycentric(xi)
-      do a = 1, 4
-         values(a) = l(a)*(2.0_dp*l(a) - 1.0_dp)
-         derivatives(1:3, a) = (4.0_dp*l(a) - 1.0_dp)*barycentric_gradient(:, a)
-      end do
-      do m = 5, 10
-         i = edge_corners(1, m)
-         j = edge_corners(2, m)
-         values(m) = 4.0_dp*l(i)*l(j)
-         derivatives(1:3, m) = 4.0_dp*(l(j)*barycentric_gradient(:, i) + l(i)*barycentric_gradient(:, j))
-      end do
+      call quadratic_simplex_shape(barycentric(xi), barycentric_gradient, edge_corners, values(1:10), &
+                                   derivatives(1:3, 1:10))
    end subroutine tet10_shape_functions
 
    !> E(a, g) = (L_g(x_a) - b) / (a - b): the linear field through the 4 point values.

@@ -11,7 +11,7 @@ module frix_tri3_cell
    implicit none
    private
 
-   public :: tri3_cell_t, new_tri3_cell, tri3_vtk_type, tri3_gmsh_type
+   public :: tri3_cell_t, new_tri3_cell, tri3_vtk_type, tri3_gmsh_type, tri3_points
 
    !> Codes of the cell in VTK (VTK_TRIANGLE) and gmsh (element type 2, the same node order).
    integer, parameter :: tri3_vtk_type = 5, tri3_gmsh_type = 2

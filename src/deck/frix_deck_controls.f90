@@ -3,7 +3,8 @@
 module frix_deck_controls
    use frix_kinds, only: dp
    use frix_strings, only: to_string, to_upper
-   use frix_linear_solver_registry, only: is_linear_solver_keyword, linear_solver_choices
+   use frix_linear_solver_registry, only: is_linear_solver_keyword, linear_solver_choices, &
+                                          linear_solver_unavailable
    use frix_model, only: model_t, load_curve_t, step_t, curve_factor
    use frix_deck_tokens, only: deck_line_t, parse_real
    use frix_deck_context, only: deck_reader_t, read_keyword_pairs, keyword_pair_t, require, read_node_dof, &
@@ -78,6 +79,9 @@ contains
             call reader%take_word(line, position, 'SOLVER value', word, ok)
             if (ok .and. .not. is_linear_solver_keyword(word)) then
                call reader%report(line, position - 1, 'unknown solver (expected '//linear_solver_choices//')')
+               ok = .false.
+            else if (ok .and. linear_solver_unavailable(word) /= '') then
+               call reader%report(line, position - 1, 'SOLVER '//trim(word)//': '//linear_solver_unavailable(word))
                ok = .false.
             end if
             if (ok) model%controls%linear_solver = to_upper(word)

@@ -151,8 +151,6 @@ contains
                   if (pressure%surface == 0) then
                      ok = .false.
                      if (.not. reader%mesh_failed) call reader%report(line, 2, 'unknown surface')
-                  else
-                     call reader%require_hex8_faces(line, 2, model%mesh, pressure%surface, 'pressure', ok)
                   end if
                end if
                call reader%expect_keyword(line, position, 'PRESSURE', ok)

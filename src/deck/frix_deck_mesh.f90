@@ -5,7 +5,7 @@ module frix_deck_mesh
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_strings, only: to_string, to_lower
-   use frix_mesh, only: mesh_t, node_set_t, surface_t
+   use frix_mesh, only: mesh_t, node_set_t, surface_t, connectivity_rows
    use frix_id_map, only: id_map_t
    use frix_mesh_checks, only: merge_meshes, mesh_bounding_box
    use frix_mesh_selection, only: nodes_in_box, boundary_faces_in_box, sorted_unique
@@ -81,8 +81,8 @@ contains
    !> A mesh with no nodes and no elements, every array allocated.
    subroutine empty_mesh(mesh)
       type(mesh_t), intent(out) :: mesh
-      allocate (mesh%coords(3, 0), mesh%node_ids(0), mesh%connectivity(8, 0), mesh%element_ids(0))
-      allocate (mesh%element_block(0), mesh%node_sets(0), mesh%element_sets(0), mesh%surfaces(0))
+      allocate (mesh%coords(3, 0), mesh%node_ids(0), mesh%connectivity(connectivity_rows([integer ::]), 0))
+      allocate (mesh%element_ids(0), mesh%element_block(0), mesh%node_sets(0), mesh%element_sets(0), mesh%surfaces(0))
       call mesh%set_cells([integer ::])
    end subroutine empty_mesh
 
@@ -100,7 +100,7 @@ contains
       call ids%build(model%mesh%node_ids, existing)
       capacity = max(reader%last(s_node_coords) - reader%first(s_node_coords) + 1, 0)
       allocate (extra%coords(3, capacity), extra%node_ids(capacity))
-      allocate (extra%connectivity(8, 0), extra%element_ids(0), extra%element_block(0))
+      allocate (extra%connectivity(connectivity_rows([integer ::]), 0), extra%element_ids(0), extra%element_block(0))
       n = 0
       i = 0
       do while (reader%next_line(s_node_coords, i, position, ok))

@@ -11,10 +11,11 @@ module frix_deck_properties
    use frix_material_registry, only: create_material
    use frix_element, only: element_t
    use frix_element_registry, only: element_shape_t, create_element, find_element_shape, &
-                                    element_shape_choices, element_shape_example, max_element_nodes
+                                    element_shape_choices, element_shape_example
    use frix_id_map, only: id_map_t
    use frix_model, only: model_t
-   use frix_mesh, only: cell_index
+   use frix_mesh, only: cell_index, connectivity_rows
+   use frix_cell_registry, only: max_cell_nodes
    use frix_deck_tokens, only: deck_line_t
    use frix_deck_context, only: deck_reader_t, property_t, require, extend_origins, extend_properties, &
                                 one_line, line_integer, after_keyword, s_materials, s_elements
@@ -106,9 +107,7 @@ contains
       call reader%node_map%build(model%mesh%node_ids, existing)
       call element_ids%build(model%mesh%element_ids, existing)
       capacity = max(reader%last(s_elements) - reader%first(s_elements) + 1, 0)
-      rows = max_element_nodes()
-      if (allocated(model%mesh%connectivity)) rows = size(model%mesh%connectivity, 1)
-      allocate (connectivity(rows, capacity), source=0)
+      allocate (connectivity(max_cell_nodes(), capacity), source=0)   ! rows for any cell
       allocate (ids(capacity), properties(capacity), origin(capacity), cells(capacity))
       n = 0
       i = 0
@@ -145,7 +144,10 @@ contains
       end do
       if (n == 0) return
       associate (mesh => model%mesh)
-         mesh%connectivity = reshape([mesh%connectivity, connectivity(:, 1:n)], [rows, mesh%n_elements + n])
+         ! rows for the new elements' cells too (frix_mesh)
+         call mesh%widen_connectivity(connectivity_rows(cells(1:n)))
+         rows = size(mesh%connectivity, 1)
+         mesh%connectivity = reshape([mesh%connectivity, connectivity(1:rows, 1:n)], [rows, mesh%n_elements + n])
          mesh%element_ids = [mesh%element_ids, ids(1:n)]
          call mesh%set_cells([(mesh%cell_of(e), e=1, mesh%n_elements), cells(1:n)])
          mesh%element_block = [mesh%element_block, spread(0, 1, n)]

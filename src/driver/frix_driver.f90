@@ -30,6 +30,7 @@ module frix_driver
    use frix_results_collection, only: collect_results
    use frix_increment_results, only: increment_results_t
    use frix_linear_solver, only: wall_clock_seconds
+   use frix_linear_solver_registry, only: finish_linear_solvers
    use frix_model_summary, only: model_summary
    use frix_state_restart, only: read_state_restart
    use frix_hdf5_file, only: hdf5_finalize
@@ -125,6 +126,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call ieee_set_halting_mode(ieee_usual, .false.)
       call analyse(model, options, start, error)
+      call finish_linear_solvers()
       call ieee_set_flag(ieee_usual, .false.)
    end subroutine run_analysis
 

@@ -152,6 +152,7 @@ contains
       end if
       call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
       if (allocated(error)) return
+      call context%solver%set_node_coordinates(model%mesh%coords)
       call context%solver%new_matrix(context%matrix)
       if (state%has_contact) then
          call context%constraints%master_nodes(model%mesh%n_nodes, first, masters)

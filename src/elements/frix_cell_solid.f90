@@ -1,8 +1,9 @@
 !> A displacement solid element over any 3D reference cell (frix_reference_cell): the cell
 !> supplies its shape functions, their natural derivatives and its Gauss rule; this module
 !> does the rest, written once over the shape-function derivatives. The TET4 formulation is
-!> this element on the TET4 cell (constant strain tetrahedron, 1 point); another cell type
-!> (TET10, ...) is a new cell and one line in the element registry.
+!> this element on the TET4 cell (constant strain tetrahedron, 1 point), TET10 on the TET10
+!> cell (quadratic tetrahedron, 4 points); another cell type is a new cell, a constructor here
+!> and one line in the element registry.
 !>
 !> At each point g of the rule: J_ij = dX_j/dxi_i = sum_a dN_a/dxi_i X_ja, dN_a/dX = J^{-1}
 !> dN_a/dxi, dV0_g = detJ w_g (Zienkiewicz & Taylor, vol. 1, 9.2-9.4).
@@ -24,12 +25,13 @@ module frix_cell_solid
    use frix_vector_algebra, only: determinant, invert3
    use frix_reference_cell, only: reference_cell_t
    use frix_tet4_cell, only: new_tet4_cell
+   use frix_tet10_cell, only: new_tet10_cell
    use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
                                     tensor_from_voigt
    implicit none
    private
 
-   public :: cell_solid_t, new_cell_solid, tet4_from_options, no_options
+   public :: cell_solid_t, new_cell_solid, tet4_from_options, tet10_from_options, no_options
 
    type, extends(element_t) :: cell_solid_t
       class(reference_cell_t), allocatable :: cell
@@ -64,14 +66,33 @@ contains
       integer, intent(in) :: kinematics
       class(element_t), allocatable, intent(out) :: element
       type(error_t), allocatable, intent(out) :: error
+      call solid_without_options(new_tet4_cell(), options, kinematics, element, error)
+   end subroutine tet4_from_options
+
+   !> TET10 (element registry): no options.
+   subroutine tet10_from_options(options, kinematics, element, error)
+      type(property_list_t), intent(in) :: options
+      integer, intent(in) :: kinematics
+      class(element_t), allocatable, intent(out) :: element
+      type(error_t), allocatable, intent(out) :: error
+      call solid_without_options(new_tet10_cell(), options, kinematics, element, error)
+   end subroutine tet10_from_options
+
+   !> The solid element on `cell`; an error if `options` holds any.
+   subroutine solid_without_options(cell, options, kinematics, element, error)
+      class(reference_cell_t), intent(in) :: cell
+      type(property_list_t), intent(in) :: options
+      integer, intent(in) :: kinematics
+      class(element_t), allocatable, intent(out) :: element
+      type(error_t), allocatable, intent(out) :: error
       if (allocated(options%names)) then
          if (size(options%names) > 0) then
-            call fatal_error(error, 'element shape TET4 takes no options')
+            call fatal_error(error, 'element shape '//cell%name//' takes no options')
             return
          end if
       end if
-      allocate (element, source=new_cell_solid(new_tet4_cell(), kinematics))
-   end subroutine tet4_from_options
+      allocate (element, source=new_cell_solid(cell, kinematics))
+   end subroutine solid_without_options
 
    !> The option keywords of a formulation without options.
    function no_options() result(specs)

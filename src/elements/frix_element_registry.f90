@@ -8,13 +8,14 @@
 !>   HEX8      8-node hexahedron, option EAS 0 (default), 3, 9, 21 or 30
 !>   HEXA8-E3  CARAT's name of HEX8 with EAS 3
 !>   TET4      4-node tetrahedron, no options (frix_cell_solid)
+!>   TET10     10-node tetrahedron, no options (frix_cell_solid)
 module frix_element_registry
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_property_list, only: property_list_t, property_spec_t, keyword_index, joined
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
    use frix_hex8_options, only: hex8_options, hex8_from_options, hexa8_e3_from_options
-   use frix_cell_solid, only: tet4_from_options, no_options
+   use frix_cell_solid, only: tet4_from_options, tet10_from_options, no_options
    implicit none
    private
 
@@ -66,7 +67,8 @@ contains
       type(element_entry_t), allocatable :: table(:)
       table = [element_entry_t('HEX8', 'HEX8', 'HEX8', 8, hex8_from_options, hex8_options), &
                element_entry_t('HEXA8-E3', 'HEX8', 'HEX8', 8, hexa8_e3_from_options, hex8_options), &
-               element_entry_t('TET4', 'TET4', 'TET4', 4, tet4_from_options, no_options)]
+               element_entry_t('TET4', 'TET4', 'TET4', 4, tet4_from_options, no_options), &
+               element_entry_t('TET10', 'TET10', 'TET10', 10, tet10_from_options, no_options)]
    end function element_table
 
    !> The shape of `keyword` (any case); `found` false if no shape has it.

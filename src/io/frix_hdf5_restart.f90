@@ -269,10 +269,12 @@ contains
                              ' nodes and '//to_string(connectivity_shape(2))//' elements, the current model '// &
                              to_string(n_nodes)//' nodes and '//to_string(n_elements)//' elements')
          else if (present(mesh)) then
-            allocate (connectivity(8, n_elements))
+            ! as many rows as the file has (8 before meshes of larger cells): the same nodes,
+            ! 0 in the rows past the narrower array's
+            allocate (connectivity(connectivity_shape(1), n_elements))
             call read_dataset(group, 'connectivity', connectivity, error)
             if (.not. allocated(error)) then
-               if (any(connectivity /= mesh%connectivity)) &
+               if (.not. same_connectivity(connectivity, mesh%connectivity)) &
                   call fatal_error(error, 'the connectivity in "'//file%file_path// &
                                    '" differs from the current mesh')
             end if
@@ -280,6 +282,18 @@ contains
       end if
       call close_group_after(group, error)
    end subroutine check_mesh
+
+   !> True when `first` and `second` hold the same nodes: equal in their common rows, 0 in the
+   !> rows only one of them has.
+   pure logical function same_connectivity(first, second) result(same)
+      integer, intent(in) :: first(:, :), second(:, :)
+      integer :: rows
+      rows = min(size(first, 1), size(second, 1))
+      same = size(first, 2) == size(second, 2)
+      if (.not. same) return
+      same = all(first(1:rows, :) == second(1:rows, :)) .and. all(first(rows + 1:, :) == 0) .and. &
+             all(second(rows + 1:, :) == 0)
+   end function same_connectivity
 
    !> Read a real 2-D dataset `name` of increment (step, increment), e.g. 'reaction' or
    !> 'contact/gap_traction' (for restoring contact state). `values` comes sized with the

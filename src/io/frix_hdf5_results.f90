@@ -4,8 +4,9 @@
 !>   /                      attributes frix_version, deck_path, title, layout_version
 !>   /mesh/coordinates      (n_nodes, 3) reference coordinates
 !>   /mesh/node_ids, /mesh/element_ids, /mesh/element_block     user ids, block index
-!>   /mesh/connectivity     (n_elements, 8) 1-based internal node numbers, the cell's order
-!>                          (frix_mesh), 0 past the nodes of a smaller cell (TET4: 4)
+!>   /mesh/connectivity     (n_elements, rows) 1-based internal node numbers, the cell's order
+!>                          (frix_mesh), 0 past the nodes of a smaller cell (TET4: 4); rows:
+!>                          the most nodes of the mesh's cells, at least 8 (TET10: 10)
 !>   /mesh/cell_types       (n_elements) VTK cell type codes, only in a mesh with other cells than HEX8
 !>   /mesh/node_sets/<name>, /mesh/element_sets/<name>          1-based internal numbers
 !>   /mesh/surfaces/<name>/elements, .../faces                  element number, local face 1..6

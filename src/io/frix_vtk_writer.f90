@@ -18,7 +18,8 @@
 !> is xx yy zz xy xz yz: components 5 and 6 are swapped), with tensor shears: the strain's
 !> engineering shears (gamma = 2 eps) are halved so that ParaView's eigenvalue/"von Mises"
 !> filters see the true tensor. Nodal tensors come from `frix_field_recovery`
-!> (`nodal_extrapolated` for 8-point elements, `nodal_average` otherwise); cell tensors are the
+!> (`nodal_extrapolated` when the arrays hold every point of each element's cell,
+!> `nodal_average` otherwise); cell tensors are the
 !> point means; von_mises is computed from those recovered stresses.
 !> Numbers are written as es24.16e3 (17 significant digits: binary64 round-trips exactly).
 module frix_vtk_writer
@@ -27,6 +28,7 @@ module frix_vtk_writer
    use frix_strings, only: to_string, zero_padded
    use frix_mesh, only: mesh_t
    use frix_hex8_cell, only: hex8_vtk_type
+   use frix_cell_registry, only: cell_entry_t, cell_table
    use frix_field_recovery, only: cell_average, nodal_average, nodal_extrapolated, von_mises_field
    use frix_text_output, only: real_edit, text_file_t
    implicit none
@@ -265,19 +267,34 @@ contains
       end do
    end subroutine check_sizes
 
-   !> Nodal (extrapolated when the elements have 8 points) and cell values of a point field.
+   !> Nodal (extrapolated when `gp` has the points of every element's cell, else the element
+   !> means) and cell values of a point field.
    subroutine recover(mesh, gp, nodal, cell, error)
       type(mesh_t), intent(in) :: mesh
       real(dp), intent(in) :: gp(:, :, :)
       real(dp), intent(out) :: nodal(:, :), cell(:, :)
       type(error_t), allocatable, intent(out) :: error
       call cell_average(gp, cell, mesh%cell_indices())
-      if (size(gp, 2) == 8) then
+      if (size(gp, 2) >= most_points(mesh)) then
          call nodal_extrapolated(mesh%connectivity, gp, nodal, error, mesh%cell_indices())
       else
          call nodal_average(mesh%connectivity, gp, nodal, mesh%cell_indices())
       end if
    end subroutine recover
+
+   !> The most integration points of the cells of the mesh's elements.
+   integer function most_points(mesh)
+      type(mesh_t), intent(in) :: mesh
+      type(cell_entry_t), allocatable :: table(:)
+      integer, allocatable :: cells(:)
+      integer :: k
+      table = cell_table()
+      cells = mesh%cell_indices()
+      most_points = 0
+      do k = 1, size(table)
+         if (any(cells == k)) most_points = max(most_points, table(k)%cell%n_points())
+      end do
+   end function most_points
 
    !> The running sums of `counts`.
    pure function cumulative(counts) result(sums)

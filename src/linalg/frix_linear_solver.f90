@@ -56,6 +56,7 @@ module frix_linear_solver
       procedure(release_interface), deferred :: release
       !> Called by the Newton loop at the start of every load increment; no-op by default.
       procedure :: new_matrix
+      procedure :: set_node_coordinates
       procedure :: begin_increment
       !> Called by the Newton loop when the matrix about to be factorized is unsymmetric
       !> although the system was expected symmetric; no-op by default.
@@ -110,6 +111,13 @@ contains
       class(system_matrix_t), allocatable, intent(out) :: matrix
       allocate (sparse_matrix_t :: matrix)
    end subroutine new_matrix
+
+   !> The nodes' positions, for a solver that builds the rigid-body modes (an algebraic
+   !> multigrid's near-null space); the direct solvers do not need them.
+   subroutine set_node_coordinates(solver, coords)
+      class(linear_solver_t), intent(inout) :: solver
+      real(dp), intent(in) :: coords(:, :)   !! (3, n_nodes)
+   end subroutine set_node_coordinates
 
    !> `matrix` as the compressed sparse column matrix a direct solver reads; an error naming
    !> the solver for any other storage.

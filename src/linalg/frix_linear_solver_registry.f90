@@ -1,5 +1,5 @@
 !> The linear solver registry: a table of (deck keyword, constructor) entries. The deck's
-!> SOLVER keyword (Auto, Cholmod, Umfpack) becomes a solver object; the Newton loop then only
+!> SOLVER keyword (Auto, Cholmod, Umfpack, Petsc) becomes a solver object; the Newton loop then only
 !> calls linear_solver_t's procedures.
 !>
 !> For a Newton system (`symmetric` given: whether its tangent is expected symmetric):
@@ -15,13 +15,15 @@ module frix_linear_solver_registry
    use frix_cholmod_solver, only: cholmod_solver_t
    use frix_umfpack_solver, only: umfpack_solver_t
    use frix_auto_solver, only: auto_solver_t
+   use frix_petsc_solver, only: petsc_solver_t, petsc_available, finish_petsc
    implicit none
    private
 
-   public :: create_linear_solver, is_linear_solver_keyword, linear_solver_choices
+   public :: create_linear_solver, is_linear_solver_keyword, linear_solver_choices, linear_solver_unavailable, &
+             finish_linear_solvers
 
    !> The deck's choices, as its messages name them (the deck's spelling of the table below).
-   character(len=*), parameter :: linear_solver_choices = 'Auto, Cholmod or Umfpack'
+   character(len=*), parameter :: linear_solver_choices = 'Auto, Cholmod, Umfpack or Petsc'
 
    abstract interface
       !> A solver for a Newton system (`newton`) whose tangent is expected `symmetric`.
@@ -43,7 +45,7 @@ contains
    function solver_table() result(table)
       type(solver_entry_t), allocatable :: table(:)
       table = [solver_entry_t('AUTO', new_auto), solver_entry_t('CHOLMOD', new_cholmod), &
-               solver_entry_t('UMFPACK', new_umfpack)]
+               solver_entry_t('UMFPACK', new_umfpack), solver_entry_t('PETSC', new_petsc)]
    end function solver_table
 
    !> Whether `keyword` (any case) names a registered solver.
@@ -56,6 +58,20 @@ contains
 
    !> Allocate the solver named by `keyword` (case-insensitive, surrounding blanks ignored);
    !> `symmetric` given: for a Newton system (see the module head).
+   !> Why a known solver cannot run in this build ('' when it can): PETSc not linked.
+   function linear_solver_unavailable(keyword) result(reason)
+      character(len=*), intent(in) :: keyword
+      character(len=:), allocatable :: reason
+      reason = ''
+      if (keyword_index(['PETSC'], keyword) > 0 .and. .not. petsc_available) &
+         reason = 'this frix was built without PETSc (scripts/setup.sh --petsc builds one with it)'
+   end function linear_solver_unavailable
+
+   !> What a solver library needs at the end of a run (PetscFinalize when PETSc was started).
+   subroutine finish_linear_solvers()
+      call finish_petsc()
+   end subroutine finish_linear_solvers
+
    subroutine create_linear_solver(keyword, solver, error, symmetric)
       character(len=*), intent(in) :: keyword
       class(linear_solver_t), allocatable, intent(out) :: solver
@@ -100,4 +116,10 @@ contains
       class(linear_solver_t), allocatable, intent(out) :: solver
       allocate (umfpack_solver_t :: solver)
    end subroutine new_umfpack
+
+   subroutine new_petsc(newton, symmetric, solver)
+      logical, intent(in) :: newton, symmetric
+      class(linear_solver_t), allocatable, intent(out) :: solver
+      allocate (petsc_solver_t :: solver)
+   end subroutine new_petsc
 end module frix_linear_solver_registry

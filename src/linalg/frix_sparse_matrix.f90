@@ -60,6 +60,7 @@ module frix_sparse_matrix
       procedure :: entry_position
       procedure :: csc_arrays
       procedure :: node_graph
+      procedure :: mirror_positions
    end type sparse_matrix_t
 
 contains
@@ -610,4 +611,26 @@ contains
       node_ptr => matrix%node_ptr
       node_adj => matrix%node_adj
    end subroutine node_graph
+
+   !> For every stored entry (1-based position p, row r, column c) the position of the entry
+   !> (row c, column r), which the structurally symmetric pattern always stores. The same index
+   !> arrays read as compressed sparse ROWS then describe A^T: values(mirror(p)) is A in
+   !> compressed rows (for libraries that take rows, such as PETSc's AIJ).
+   subroutine mirror_positions(matrix, mirror)
+      class(sparse_matrix_t), intent(in) :: matrix
+      integer, allocatable, intent(out) :: mirror(:)
+      integer :: a, b, k, k_back, i, j
+      allocate (mirror(size(matrix%values)))
+      do a = 1, matrix%n_nodes
+         do k = 1, matrix%node_ptr(a + 1) - matrix%node_ptr(a)
+            b = matrix%node_adj(matrix%node_ptr(a) + k - 1)
+            k_back = neighbour_index(matrix, b, a)
+            do i = 1, 3
+               do j = 1, 3
+                  mirror(entry_position(matrix, a, k, i, j)) = entry_position(matrix, b, k_back, j, i)
+               end do
+            end do
+         end do
+      end do
+   end subroutine mirror_positions
 end module frix_sparse_matrix

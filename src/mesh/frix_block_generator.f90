@@ -16,7 +16,7 @@
 module frix_block_generator
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
-   use frix_mesh, only: mesh_t, cell_index
+   use frix_mesh, only: mesh_t, cell_index, connectivity_rows
    implicit none
    private
 
@@ -69,9 +69,9 @@ contains
       block%n_nodes = (nx + 1)*(ny + 1)*(nz + 1)
       block%n_elements = nx*ny*nz
       allocate (block%coords(3, block%n_nodes), block%node_ids(block%n_nodes))
-      allocate (block%connectivity(8, block%n_elements), block%element_ids(block%n_elements))
-      allocate (block%element_block(block%n_elements), source=0)
       call block%set_cells(spread(cell_index('HEX8'), 1, block%n_elements))
+      allocate (block%connectivity(connectivity_rows(block%element_cell), block%n_elements), source=0)
+      allocate (block%element_ids(block%n_elements), block%element_block(block%n_elements), source=0)
 
       do k = 0, nz
          do j = 0, ny
@@ -89,7 +89,7 @@ contains
                corner(1:4) = [node_number(i, j, k), node_number(i + 1, j, k), &
                               node_number(i + 1, j + 1, k), node_number(i, j + 1, k)]
                corner(5:8) = corner(1:4) + (nx + 1)*(ny + 1)
-               block%connectivity(:, e) = corner
+               block%connectivity(1:8, e) = corner
                block%element_ids(e) = first_element_id + e - 1
             end do
          end do

@@ -14,19 +14,23 @@ module frix_gmsh_context
    use frix_quad4_cell, only: quad4_gmsh_type
    use frix_tet4_cell, only: tet4_gmsh_type
    use frix_tri3_cell, only: tri3_gmsh_type
+   use frix_tet10_cell, only: tet10_gmsh_type
+   use frix_tri6_cell, only: tri6_gmsh_type
    implicit none
    private
 
-   public :: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, gmsh_tetrahedron, is_volume_cell
+   public :: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, gmsh_tetrahedron, is_volume_cell, is_surface_cell
    public :: integer_list_t, push, reserve, name_t, raw_mesh_t
    public :: claim_section, skip_section, next_data_line, expect_section_end
    public :: read_count, read_count_line, check_room
    public :: read_blocks_header, read_block_start, read_block_count, check_blocks_total
    public :: read_positive_id, read_physical_tag, read_dimension, shorten
 
-   !> The gmsh element types frix reads: the reference cells' codes (frix_hex8_cell, frix_quad4_cell).
+   !> The gmsh element types frix reads: the reference cells' codes (frix_hex8_cell,
+   !> frix_quad4_cell, frix_tet4_cell, frix_tri3_cell, frix_tet10_cell, frix_tri6_cell).
    integer, parameter :: gmsh_quadrangle = quad4_gmsh_type, gmsh_hexahedron = hex8_gmsh_type
    integer, parameter :: gmsh_triangle = tri3_gmsh_type, gmsh_tetrahedron = tet4_gmsh_type
+   integer, parameter :: gmsh_tetrahedron10 = tet10_gmsh_type, gmsh_triangle6 = tri6_gmsh_type
 
    !> A growable list of default integers.
    type :: integer_list_t
@@ -66,11 +70,20 @@ module frix_gmsh_context
 
 contains
 
-   !> Whether gmsh element type `element_type` is a volume cell frix reads (HEX8, TET4).
+   !> Whether gmsh element type `element_type` is a volume cell frix reads (HEX8, TET4, TET10).
    pure logical function is_volume_cell(element_type)
       integer, intent(in) :: element_type
-      is_volume_cell = element_type == gmsh_hexahedron .or. element_type == gmsh_tetrahedron
+      is_volume_cell = element_type == gmsh_hexahedron .or. element_type == gmsh_tetrahedron .or. &
+                       element_type == gmsh_tetrahedron10
    end function is_volume_cell
+
+   !> Whether gmsh element type `element_type` is a face cell of a volume cell frix reads
+   !> (QUAD4, TRI3, TRI6).
+   pure logical function is_surface_cell(element_type)
+      integer, intent(in) :: element_type
+      is_surface_cell = element_type == gmsh_quadrangle .or. element_type == gmsh_triangle .or. &
+                        element_type == gmsh_triangle6
+   end function is_surface_cell
 
    ! ---- sections ---------------------------------------------------------------------------
 

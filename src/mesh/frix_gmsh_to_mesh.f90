@@ -1,8 +1,9 @@
 !> The content of a gmsh .msh file (`raw_mesh_t`, read by frix_gmsh_reader) made a `mesh_t`:
-!> the nodes (ids unique), the volume elements (8-node hexahedra, HEX8, and 4-node tetrahedra,
-!> TET4) in file order (an element that format 2.2 writes once per physical volume kept once),
+!> the nodes (ids unique), the volume elements (8-node hexahedra, HEX8, 4-node tetrahedra, TET4,
+!> and 10-node tetrahedra, TET10, their nodes put in the cell's order) in file order (an
+!> element that format 2.2 writes once per physical volume kept once),
 !> and one node set per physical group, one element set per physical volume and one surface
-!> per physical surface (each quadrilateral or triangle matched to the boundary face of a
+!> per physical surface (each quadrilateral or 3- or 6-node triangle matched to the boundary face of a
 !> volume element with the same nodes). Sets are in
 !> ascending (dim, tag) order and named from `$PhysicalNames`, else "<dim>:<tag>". Errors
 !> name the file and the line of the element or node concerned.
@@ -10,11 +11,11 @@ module frix_gmsh_to_mesh
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_id_map, only: id_map_t
-   use frix_mesh, only: mesh_t, cell_index
+   use frix_mesh, only: mesh_t, connectivity_rows
+   use frix_cell_registry, only: cell_entry_t, cell_table, max_cell_nodes
    use frix_mesh_checks, only: node_to_elements
    use frix_mesh_selection, only: sort_nodes
-   use frix_gmsh_context, only: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, &
-                                is_volume_cell, raw_mesh_t
+   use frix_gmsh_context, only: is_volume_cell, is_surface_cell, raw_mesh_t
    implicit none
    private
 
@@ -75,12 +76,16 @@ contains
       integer, allocatable, intent(out) :: record_element(:)
       type(error_t), allocatable, intent(out) :: error
       type(id_map_t) :: element_map
-      integer, allocatable :: nodes(:), cells(:)
-      integer :: n_records, n_volume, r, element, existing, row(8)
+      type(cell_entry_t), allocatable :: table(:)
+      integer, allocatable :: nodes(:), cells(:), row(:), cell_of_type(:)
+      integer :: n_records, n_volume, r, element, existing, cell
+      table = cell_table()
+      cell_of_type = cells_of_gmsh_types()
       n_records = raw%record_ids%count
       n_volume = count([(is_volume_cell(raw%record_types%items(r)), r=1, n_records)])
-      allocate (mesh%connectivity(8, n_volume), mesh%element_ids(n_volume), record_element(n_records))
-      allocate (cells(n_volume))
+      ! rows for any cell, cut to the mesh's cells' at the end
+      allocate (mesh%connectivity(max_cell_nodes(), n_volume), mesh%element_ids(n_volume), record_element(n_records))
+      allocate (cells(n_volume), row(max_cell_nodes()))
       record_element = 0
       call element_map%clear(n_volume)
       element = 0
@@ -88,6 +93,9 @@ contains
          if (.not. is_volume_cell(raw%record_types%items(r))) cycle
          call record_nodes(file_name, raw, r, node_map, nodes, error)
          if (allocated(error)) return
+         cell = cell_of_type(raw%record_types%items(r))
+         ! gmsh's node order made the cell's (frix_tet10_cell: TET10's nodes 9 and 10)
+         if (allocated(table(cell)%cell%gmsh_nodes)) nodes = nodes(table(cell)%cell%gmsh_nodes)
          row = 0
          row(1:size(nodes)) = nodes
          call element_map%insert(raw%record_ids%items(r), element + 1, existing)
@@ -102,15 +110,28 @@ contains
             element = element + 1
             mesh%connectivity(:, element) = row
             mesh%element_ids(element) = raw%record_ids%items(r)
-            cells(element) = cell_index(merge('HEX8', 'TET4', raw%record_types%items(r) == gmsh_hexahedron))
+            cells(element) = cell
             record_element(r) = element
          end if
       end do
       mesh%n_elements = element
-      mesh%connectivity = mesh%connectivity(:, 1:element)
+      mesh%connectivity = mesh%connectivity(1:connectivity_rows(cells(1:element)), 1:element)
       mesh%element_ids = mesh%element_ids(1:element)
       call mesh%set_cells(cells(1:element))
    end subroutine collect_volume_elements
+
+   !> The index in the cell table of the cell of each gmsh element type code, 0 for a type
+   !> without a cell, (largest code of a cell).
+   function cells_of_gmsh_types() result(cells)
+      integer, allocatable :: cells(:)
+      type(cell_entry_t), allocatable :: table(:)
+      integer :: k
+      table = cell_table()
+      allocate (cells(maxval([(table(k)%cell%gmsh_type, k=1, size(table))])), source=0)
+      do k = 1, size(table)
+         if (table(k)%cell%gmsh_type > 0) cells(table(k)%cell%gmsh_type) = k
+      end do
+   end function cells_of_gmsh_types
 
    !> Format 2.2 writes a hexahedron once per physical volume holding it, each copy with an id
    !> of its own (gmsh 4.8): keep the first of hexahedra with identical node lists, and point
@@ -197,15 +218,15 @@ contains
                if (raw%group_dims%items(raw%record_groups%items(k)) /= dim) cycle
                associate (element_type => raw%record_types%items(r), id => raw%record_ids%items(r))
                   if (dim == 3 .and. .not. is_volume_cell(element_type)) then
-                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra (type 5) and 4-node '// &
-                                         'tetrahedra (type 4) are supported: element '// &
-                                         to_string(id)//' has type '//to_string(element_type))
+                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra (type 5), 4-node '// &
+                                         'tetrahedra (type 4) and 10-node tetrahedra (type 11) are supported: '// &
+                                         'element '//to_string(id)//' has type '//to_string(element_type))
                      return
                   end if
-                  if (dim == 2 .and. element_type /= gmsh_quadrangle .and. element_type /= gmsh_triangle) then
-                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals (type 3) and 3-node '// &
-                                         'triangles (type 2) are supported on surfaces: element '//to_string(id)// &
-                                         ' has type '//to_string(element_type))
+                  if (dim == 2 .and. .not. is_surface_cell(element_type)) then
+                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals (type 3), 3-node '// &
+                                         'triangles (type 2) and 6-node triangles (type 9) are supported on '// &
+                                         'surfaces: element '//to_string(id)//' has type '//to_string(element_type))
                      return
                   end if
                end associate

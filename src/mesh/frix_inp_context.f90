@@ -41,8 +41,9 @@ module frix_inp_context
       type(integer_list_t) :: node_ids, node_lines, node_files
       real(dp), allocatable :: coords(:, :)
       type(id_map_t) :: node_map
-      ! elements: nodes of element e are connectivity(8e-7:8e), 0 past its cell's node count;
-      ! element_cells: its cell (index in the cell table, frix_mesh's cell_index)
+      ! elements: the nodes of each element, its cell's node count of them, one element after
+      ! the other in `connectivity`; element_cells: its cell (index in the cell table,
+      ! frix_mesh's cell_index)
       type(integer_list_t) :: element_ids, element_lines, element_files, connectivity, element_cells
       type(id_map_t) :: element_map
       ! sets and surfaces
@@ -55,7 +56,7 @@ module frix_inp_context
       ! element being read (its line may continue on the next): id and nodes so far
       logical :: pending = .false.
       integer :: pending_id = 0, pending_count = 0, pending_file = 0, pending_line = 0
-      integer :: pending_nodes(8) = 0
+      integer, allocatable :: pending_nodes(:)
       ! the cell of the current *ELEMENT keyword's elements, its node count and name (C3D8: HEX8)
       integer :: element_cell = 0, element_node_count = 8
       character(len=:), allocatable :: element_cell_name
@@ -169,12 +170,12 @@ contains
    end subroutine add_node
 
    !> An element of the current *ELEMENT's cell (its id not yet defined) with internal node
-   !> numbers `nodes` (0 past the cell's node count).
+   !> numbers `nodes` (the cell's node count of them).
    subroutine add_element(data, id, nodes, file, line)
       type(inp_data_t), intent(inout) :: data
-      integer, intent(in) :: id, nodes(8), file, line
+      integer, intent(in) :: id, nodes(:), file, line
       integer :: k
-      do k = 1, 8
+      do k = 1, size(nodes)
          call push(data%connectivity, nodes(k))
       end do
       call push(data%element_cells, data%element_cell)

@@ -65,7 +65,7 @@ contains
          if (allocated(error)) return
          data%pending = .true.
          data%pending_count = 0
-         data%pending_nodes = 0
+         data%pending_nodes = spread(0, 1, data%element_node_count)
          data%pending_file = file
          data%pending_line = scanner%line_number
       end if

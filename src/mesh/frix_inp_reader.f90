@@ -3,9 +3,12 @@
 !>
 !> What becomes of the file's content:
 !> - *NODE (optional NSET=): every node, in file order (ids kept in `node_ids`);
-!> - *ELEMENT, TYPE=C3D8 | C3D8R | C3D8I (8-node hexahedra, HEX8 cells) or TYPE=C3D4 (4-node
-!>   tetrahedra, TET4 cells), optional ELSET=: the elements in file order (ids kept; the node
-!>   orders of C3D8 and C3D4 are those of frix's HEX8 and TET4 cells). The type only gives the
+!> - *ELEMENT, TYPE=C3D8 | C3D8R | C3D8I (8-node hexahedra, HEX8 cells), TYPE=C3D4 (4-node
+!>   tetrahedra, TET4 cells) or TYPE=C3D10 (10-node tetrahedra, TET10 cells), optional ELSET=:
+!>   the elements in file order (ids kept; the node orders of C3D8, C3D4 and C3D10 are those of
+!>   frix's HEX8, TET4 and TET10 cells: C3D10's mid-edge nodes 5-10 on the edges 1-2, 2-3,
+!>   3-1, 1-4, 2-4, 3-4, Abaqus Analysis User's Guide, "Three-dimensional solid element
+!>   library", and CalculiX User's Manual, "C3D10"). The type only gives the
 !>   cell: the formulation (integration, EAS) is the one of the deck's STRUCTURE ELEMENTS
 !>   property. Another TYPE is an error naming it;
 !> - *NSET, NSET= and *ELSET, ELSET= (optional GENERATE): node sets and element sets, sorted
@@ -24,7 +27,7 @@ module frix_inp_reader
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string, to_upper
    use frix_text_scanner, only: text_scanner_t, open_text_file
-   use frix_mesh, only: mesh_t, cell_index
+   use frix_mesh, only: mesh_t, cell_index, connectivity_rows
    use frix_mesh_selection, only: sorted_unique
    use frix_gmsh_context, only: shorten
    use frix_inp_keyword, only: inp_keyword_t, read_keyword_line
@@ -137,7 +140,7 @@ contains
       end select
    end subroutine start_keyword
 
-   !> *ELEMENT, TYPE=..., ELSET=...: 8-node hexahedra or 4-node tetrahedra.
+   !> *ELEMENT, TYPE=..., ELSET=...: 8-node hexahedra, 4- or 10-node tetrahedra.
    subroutine start_element(scanner, keyword, data, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(inp_keyword_t), intent(in) :: keyword
@@ -159,10 +162,13 @@ contains
       case ('C3D4')
          data%element_cell_name = 'TET4'
          data%element_node_count = 4
+      case ('C3D10')
+         data%element_cell_name = 'TET10'
+         data%element_node_count = 10
       case default
          call scanner%fail_at_token(error, 'element type '//shorten(keyword%value_of('TYPE'))// &
-                                    ' is not supported: frix reads 8-node hexahedra (C3D8, C3D8R, C3D8I)'// &
-                                    ' and 4-node tetrahedra (C3D4)')
+                                    ' is not supported: frix reads 8-node hexahedra (C3D8, C3D8R, C3D8I),'// &
+                                    ' 4-node tetrahedra (C3D4) and 10-node tetrahedra (C3D10)')
          return
       end select
       data%element_cell = cell_index(data%element_cell_name)
@@ -265,21 +271,25 @@ contains
    subroutine build_mesh(data, mesh)
       type(inp_data_t), intent(in) :: data
       type(mesh_t), intent(out) :: mesh
-      integer :: n_node_sets, n_element_sets, k, i_node, i_element
+      integer :: n_node_sets, n_element_sets, k, i_node, i_element, e, first, n
       integer, allocatable :: keys(:)
       mesh%n_nodes = data%node_ids%count
       mesh%n_elements = data%element_ids%count
       allocate (mesh%coords(3, mesh%n_nodes), mesh%node_ids(mesh%n_nodes))
-      allocate (mesh%connectivity(8, mesh%n_elements), mesh%element_ids(mesh%n_elements))
+      call mesh%set_cells(data%element_cells%items(1:mesh%n_elements))
+      allocate (mesh%connectivity(connectivity_rows(mesh%element_cell), mesh%n_elements), source=0)
+      allocate (mesh%element_ids(mesh%n_elements))
       if (mesh%n_nodes > 0) then
          mesh%coords = data%coords(:, 1:mesh%n_nodes)
          mesh%node_ids = data%node_ids%items(1:mesh%n_nodes)
       end if
-      if (mesh%n_elements > 0) then
-         mesh%connectivity = reshape(data%connectivity%items(1:8*mesh%n_elements), [8, mesh%n_elements])
-         mesh%element_ids = data%element_ids%items(1:mesh%n_elements)
-      end if
-      call mesh%set_cells(data%element_cells%items(1:mesh%n_elements))
+      first = 1
+      do e = 1, mesh%n_elements
+         n = mesh%node_count(e)
+         mesh%connectivity(1:n, e) = data%connectivity%items(first:first + n - 1)
+         first = first + n
+      end do
+      if (mesh%n_elements > 0) mesh%element_ids = data%element_ids%items(1:mesh%n_elements)
       allocate (mesh%element_block(mesh%n_elements), source=0)
       n_node_sets = 0
       do k = 1, data%n_sets

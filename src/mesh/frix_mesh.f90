@@ -5,18 +5,19 @@
 !> Each element has a cell type, `element_cell(e)`, an index into `cells` (the cell registry's
 !> table, frix_cell_registry): its local node order, node count and faces are that cell's.
 !> The connectivity stays one rectangular array with as many rows as the largest cell of the
-!> mesh has nodes; the rows past an element's own node count hold 0. Use `element_nodes`,
+!> mesh has nodes, at least 8 (`connectivity_rows`: a mesh of hexahedra or linear tetrahedra
+!> keeps the 8 rows of its output files); the rows past an element's own node count hold 0. Use `element_nodes`,
 !> `face_nodes`, `node_count` and `face_count` rather than the rows. A mesh made without
 !> `element_cell` (built by hand in a test) is all HEX8.
 module frix_mesh
    use frix_kinds, only: dp
    use frix_hex8_cell, only: hex8_face_nodes
    use frix_reference_cell, only: reference_cell_t
-   use frix_cell_registry, only: cell_entry_t, cell_table, hex8_cell_index
+   use frix_cell_registry, only: cell_entry_t, cell_table, find_in_table, hex8_cell_index
    implicit none
    private
 
-   public :: mesh_t, node_set_t, element_set_t, surface_t, hex8_face_nodes, cell_index
+   public :: mesh_t, node_set_t, element_set_t, surface_t, hex8_face_nodes, cell_index, connectivity_rows
 
    type :: node_set_t
       character(len=:), allocatable :: name
@@ -51,6 +52,7 @@ module frix_mesh
    contains
       procedure :: find_node_set
       procedure :: set_cells
+      procedure :: widen_connectivity
       procedure :: cell_of
       procedure :: node_count
       procedure :: face_count
@@ -69,14 +71,33 @@ contains
    !> The index of the cell `name` in the cell registry's table (0 if none).
    integer function cell_index(name)
       character(len=*), intent(in) :: name
+      cell_index = find_in_table(cell_table(), name)
+   end function cell_index
+
+   !> Rows of the connectivity of a mesh whose elements have the cells `element_cell` (indices
+   !> into the cell table): the most nodes of those cells, at least HEX8's 8.
+   integer function connectivity_rows(element_cell)
+      integer, intent(in) :: element_cell(:)
       type(cell_entry_t), allocatable :: table(:)
       integer :: k
       table = cell_table()
-      cell_index = 0
+      connectivity_rows = table(hex8_cell_index)%cell%n_nodes
       do k = 1, size(table)
-         if (table(k)%cell%name == name) cell_index = k
+         if (any(element_cell == k)) connectivity_rows = max(connectivity_rows, table(k)%cell%n_nodes)
       end do
-   end function cell_index
+   end function connectivity_rows
+
+   !> Give the connectivity at least `rows` rows, the new ones 0.
+   subroutine widen_connectivity(self, rows)
+      class(mesh_t), intent(inout) :: self
+      integer, intent(in) :: rows
+      integer, allocatable :: wider(:, :)
+      if (.not. allocated(self%connectivity)) allocate (self%connectivity(rows, 0))
+      if (size(self%connectivity, 1) >= rows) return
+      allocate (wider(rows, size(self%connectivity, 2)), source=0)
+      wider(1:size(self%connectivity, 1), :) = self%connectivity
+      call move_alloc(wider, self%connectivity)
+   end subroutine widen_connectivity
 
    !> Give the elements their cell types (`element_cell`, indices into the cell table) and keep
    !> the table in the mesh.

@@ -366,9 +366,13 @@ contains
       integer, intent(in) :: n_used
       integer, intent(in) :: extra(:, :)
       integer, allocatable :: joined(:, :)
-      allocate (joined(size(extra, 1), n_used + size(extra, 2)))
-      if (n_used > 0) joined(:, 1:n_used) = array(:, 1:n_used)
-      joined(:, n_used + 1:) = extra
+      integer :: rows
+      ! as many rows as the wider of the two, 0 below a narrower one's (a connectivity)
+      rows = size(extra, 1)
+      if (n_used > 0) rows = max(rows, size(array, 1))
+      allocate (joined(rows, n_used + size(extra, 2)), source=0)
+      if (n_used > 0) joined(1:size(array, 1), 1:n_used) = array(:, 1:n_used)
+      joined(1:size(extra, 1), n_used + 1:) = extra
       call move_alloc(joined, array)
    end subroutine append_integer_columns
 

@@ -6,10 +6,12 @@ program test_elements
    use test_element_registry, only: collect_element_registry
    use test_surface_load, only: collect_surface_load
    use test_tet4, only: collect_tet4
+   use test_tet10, only: collect_tet10
    implicit none
    call run_suites([new_testsuite('hex8', collect_hex8), &
                     new_testsuite('hex8_thin', collect_hex8_thin), &
                     new_testsuite('element_registry', collect_element_registry), &
                     new_testsuite('surface_load', collect_surface_load), &
-                    new_testsuite('tet4', collect_tet4)])
+                    new_testsuite('tet4', collect_tet4), &
+                    new_testsuite('tet10', collect_tet10)])
 end program test_elements

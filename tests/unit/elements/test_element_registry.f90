@@ -63,8 +63,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: create_error
       class(element_t), allocatable :: element
-      call create_element('TET10', eas(0), kinematics_linear, element, create_error)
-      call check_message_contains(error, create_error, 'unknown element shape "TET10"')
+      call create_element('WEDGE6', eas(0), kinematics_linear, element, create_error)
+      call check_message_contains(error, create_error, 'unknown element shape "WEDGE6"')
       if (allocated(error)) return
       call check_message_contains(error, create_error, 'HEX8, HEXA8-E3')
    end subroutine test_unknown_shape
@@ -113,11 +113,15 @@ contains
       if (allocated(error)) return
       call check(error, shape%options(1)%name == 'EAS' .and. shape%options(1)%whole, 'EAS option')
       if (allocated(error)) return
-      call find_element_shape('TET10', shape, found)
-      call check(error, .not. found, 'TET10 is no shape')
+      call find_element_shape('WEDGE6', shape, found)
+      call check(error, .not. found, 'WEDGE6 is no shape')
       if (allocated(error)) return
-      call check(error, element_shape_choices() == 'HEX8, HEXA8-E3 or TET4' .and. element_shape_example() == 'HEX8' &
-                 .and. max_element_nodes() == 8, 'choices '//element_shape_choices())
+      call find_element_shape('tet10', shape, found)
+      call check(error, found .and. shape%n_nodes == 10 .and. shape%cell == 'TET10' .and. size(shape%options) == 0, &
+                 'TET10 shape: 10 nodes on TET10 cells, no options')
+      if (allocated(error)) return
+      call check(error, element_shape_choices() == 'HEX8, HEXA8-E3, TET4 or TET10' .and. element_shape_example() == 'HEX8' &
+                 .and. max_element_nodes() == 10, 'choices '//element_shape_choices())
    end subroutine test_shape_info
 
    subroutine test_unknown_option(error)

@@ -1,10 +1,15 @@
-!> Pressure load kernel of a bilinear quadrilateral face (frix_surface_load). Reference values:
+!> Pressure load kernel (frix_surface_load) on a bilinear quadrilateral face and on 3- and
+!> 6-node triangles. Reference values:
 !>   - total force of a pressure p on a face = -p (vector area), with the vector area of a
 !>     bilinear face exactly (d1 x d2)/2 of its diagonals d1 = x3 - x1, d2 = x4 - x2;
 !>   - on a unit square each node carries a quarter (symmetry);
 !>   - tributary areas of a trapezoid worked out by hand (see test_trapezoid_weights);
 !>   - the follower load stiffness against a central difference of the force; the force is
-!>     quadratic in u, so the central difference has no truncation error, only round-off;
+!>     quadratic in u, so the central difference has no truncation error, only round-off
+!>     (on the warped quadrilateral and on a 6-node triangle with curved edges);
+!>   - a flat triangle with straight edges: total force -p (x2 - x1) x (x3 - x1) / 2; TRI3: a
+!>     third on each node; TRI6: nothing on the corners, a third on each mid-edge node
+!>     (int N_corner dA = 0, int N_mid dA = A/3 for quadratic shape functions);
 !>   - the face shape functions: N_a(xi_b) = delta_ab at the corners, sum_a N_a = 1, and their
 !>     derivatives against central differences (N_a is linear in each of xi, eta separately, so
 !>     the difference is exact up to round-off);
@@ -17,6 +22,10 @@ module test_surface_load
    use frix_testing, only: unittest_t, new_unittest, check, check_close
    use frix_surface_load, only: pressure_load, face_area_weights, face_shape_functions, face_node_xi, face_node_eta
    use frix_vector_algebra, only: cross_product
+   use frix_reference_cell, only: reference_cell_t
+   use frix_quad4_cell, only: new_quad4_cell
+   use frix_tri3_cell, only: new_tri3_cell
+   use frix_tri6_cell, only: new_tri6_cell
    implicit none
    private
 
@@ -42,6 +51,8 @@ contains
                new_unittest('warped face, follower: total on the current face', test_warped_follower), &
                new_unittest('dead load ignores u and has no stiffness', test_dead_independent_of_u), &
                new_unittest('follower stiffness vs central differences', test_follower_tangent), &
+               new_unittest('flat triangles: total -p A n; TRI3 thirds, TRI6 on mid-edges', test_flat_triangles), &
+               new_unittest('TRI6 follower stiffness vs central differences', test_tri6_follower_tangent), &
                new_unittest('area weights of a unit square and a rectangle', test_rectangle_weights), &
                new_unittest('area weights of a trapezoid (by hand)', test_trapezoid_weights), &
                new_unittest('plane face: nodal force = -p n weight', test_plane_force_matches_weights), &
@@ -57,7 +68,7 @@ contains
       expected = [0.0_dp, 0.0_dp, -0.25_dp]
       do k = 1, 2
          follower = k == 2
-         call pressure_load(unit_square, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), 1.0_dp, follower, force, tangent)
+         call pressure_load(new_quad4_cell(), unit_square, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), 1.0_dp, follower, force, tangent)
          do a = 1, 4
             do i = 1, 3
                call check_close(error, force(3*(a - 1) + i), expected(i), 1.0e-14_dp, 1.0e-15_dp, &
@@ -72,7 +83,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), parameter :: pressure = 2.5_dp
       real(dp) :: force(12), tangent(12, 12)
-      call pressure_load(warped_face, warped_displacement, pressure, .false., force, tangent)
+      call pressure_load(new_quad4_cell(), warped_face, warped_displacement, pressure, .false., force, tangent)
       call check_total(error, force, -pressure*half_diagonal_cross(warped_face))
    end subroutine test_warped_dead
 
@@ -80,7 +91,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), parameter :: pressure = -1.7_dp  ! suction: sign must carry through
       real(dp) :: force(12), tangent(12, 12)
-      call pressure_load(warped_face, warped_displacement, pressure, .true., force, tangent)
+      call pressure_load(new_quad4_cell(), warped_face, warped_displacement, pressure, .true., force, tangent)
       call check_total(error, force, -pressure*half_diagonal_cross(warped_face + warped_displacement))
    end subroutine test_warped_follower
 
@@ -88,8 +99,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: force(12), force_zero(12), tangent(12, 12)
       integer :: i
-      call pressure_load(warped_face, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), 3.0_dp, .false., force_zero)
-      call pressure_load(warped_face, warped_displacement, 3.0_dp, .false., force, tangent)
+      call pressure_load(new_quad4_cell(), warped_face, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), 3.0_dp, .false., force_zero)
+      call pressure_load(new_quad4_cell(), warped_face, warped_displacement, 3.0_dp, .false., force, tangent)
       do i = 1, 12
          call check_close(error, force(i), force_zero(i), 0.0_dp, message='force entry '//to_string(i))
          if (allocated(error)) return
@@ -97,36 +108,98 @@ contains
       call check(error, all(tangent == 0.0_dp), 'dead load stiffness must be zero')
    end subroutine test_dead_independent_of_u
 
-   !> Column j of d fext/du vs (f(u + h e_j) - f(u - h e_j)) / (2 h), h = 1e-6 (face size ~2).
+   !> The warped quadrilateral's follower stiffness (check_follower_tangent).
    subroutine test_follower_tangent(error)
       type(error_t), allocatable, intent(out) :: error
+      call check_follower_tangent(new_quad4_cell(), warped_face, warped_displacement, error)
+   end subroutine test_follower_tangent
+
+   !> A 6-node triangle with curved edges (mid-edge nodes off the middle), displaced by about
+   !> 20 % of its size: its follower stiffness (check_follower_tangent).
+   subroutine test_tri6_follower_tangent(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: coords(3, 6), u(3, 6)
+      integer :: a
+      coords(:, 1:3) = warped_face(:, 1:3)
+      coords(:, 4) = 0.5_dp*(coords(:, 1) + coords(:, 2)) + [0.05_dp, -0.1_dp, 0.2_dp]
+      coords(:, 5) = 0.5_dp*(coords(:, 2) + coords(:, 3)) + [-0.1_dp, 0.05_dp, 0.1_dp]
+      coords(:, 6) = 0.5_dp*(coords(:, 3) + coords(:, 1)) + [0.1_dp, 0.1_dp, -0.15_dp]
+      do a = 1, 6
+         u(:, a) = 0.3_dp*[sin(1.1_dp*a), cos(0.7_dp*a), sin(0.4_dp*a + 1.0_dp)]
+      end do
+      call check_follower_tangent(new_tri6_cell(), coords, u, error)
+   end subroutine test_tri6_follower_tangent
+
+   !> Column j of d fext/du vs (f(u + h e_j) - f(u - h e_j)) / (2 h), h = 1e-6 (face size ~2);
+   !> the stiffness must be unsymmetric (a curved or warped face).
+   subroutine check_follower_tangent(face, coords, u, error)
+      class(reference_cell_t), intent(in) :: face
+      real(dp), intent(in) :: coords(:, :), u(:, :)
+      type(error_t), allocatable, intent(out) :: error
       real(dp), parameter :: pressure = 4.0_dp, step = 1.0e-6_dp
-      real(dp) :: force(12), tangent(12, 12), differences(12, 12), plus(12), minus(12)
-      real(dp) :: perturbed(3, 4), scale
-      integer :: i, j, a, direction
-      call pressure_load(warped_face, warped_displacement, pressure, .true., force, tangent)
-      do j = 1, 12
+      real(dp), allocatable :: force(:), tangent(:, :), differences(:, :), plus(:), minus(:), perturbed(:, :)
+      real(dp) :: scale
+      integer :: i, j, a, direction, n
+      n = 3*size(coords, 2)
+      allocate (force(n), tangent(n, n), differences(n, n), plus(n), minus(n))
+      call pressure_load(face, coords, u, pressure, .true., force, tangent)
+      do j = 1, n
          a = (j - 1)/3 + 1
          direction = j - 3*(a - 1)
-         perturbed = warped_displacement
-         perturbed(direction, a) = warped_displacement(direction, a) + step
-         call pressure_load(warped_face, perturbed, pressure, .true., plus)
-         perturbed(direction, a) = warped_displacement(direction, a) - step
-         call pressure_load(warped_face, perturbed, pressure, .true., minus)
+         perturbed = u
+         perturbed(direction, a) = u(direction, a) + step
+         call pressure_load(face, coords, perturbed, pressure, .true., plus)
+         perturbed(direction, a) = u(direction, a) - step
+         call pressure_load(face, coords, perturbed, pressure, .true., minus)
          differences(:, j) = (plus - minus)/(2.0_dp*step)
       end do
       scale = maxval(abs(differences))
       call check(error, maxval(abs(tangent - transpose(tangent))) > 1.0e-3_dp*scale, &
-                 'load stiffness of a warped face should be unsymmetric')
+                 face%name//': load stiffness of a warped face should be unsymmetric')
       if (allocated(error)) return
-      do j = 1, 12
-         do i = 1, 12
+      do j = 1, n
+         do i = 1, n
             call check_close(error, tangent(i, j), differences(i, j), 1.0e-6_dp, 1.0e-6_dp*scale, &
-                             'K_load('//to_string(i)//','//to_string(j)//')')
+                             face%name//': K_load('//to_string(i)//','//to_string(j)//')')
             if (allocated(error)) return
          end do
       end do
-   end subroutine test_follower_tangent
+   end subroutine check_follower_tangent
+
+   !> A flat triangle with straight edges in an oblique plane, dead and follower (u = 0) load:
+   !> the total force -p (x2 - x1) x (x3 - x1) / 2; TRI3 a third of it on each node, TRI6
+   !> nothing on the corners and a third on each mid-edge node.
+   subroutine test_flat_triangles(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: pressure = 2.5_dp
+      real(dp) :: coords(3, 6), force(18), total(3), expected(3, 6)
+      integer :: k, n
+      logical :: follower
+      coords(:, 1) = [0.2_dp, -0.1_dp, 0.3_dp]
+      coords(:, 2) = [1.9_dp, 0.4_dp, -0.2_dp]
+      coords(:, 3) = [0.5_dp, 1.6_dp, 0.9_dp]
+      coords(:, 4) = 0.5_dp*(coords(:, 1) + coords(:, 2))
+      coords(:, 5) = 0.5_dp*(coords(:, 2) + coords(:, 3))
+      coords(:, 6) = 0.5_dp*(coords(:, 3) + coords(:, 1))
+      total = -pressure*0.5_dp*cross_product(coords(:, 2) - coords(:, 1), coords(:, 3) - coords(:, 1))
+      do k = 1, 4
+         follower = k > 2
+         if (mod(k, 2) == 1) then
+            n = 3
+            expected(:, 1:3) = spread(total/3, 2, 3)
+            call pressure_load(new_tri3_cell(), coords(:, 1:3), 0.0_dp*coords(:, 1:3), pressure, follower, force)
+         else
+            n = 6
+            expected(:, 1:3) = 0.0_dp
+            expected(:, 4:6) = spread(total/3, 2, 3)
+            call pressure_load(new_tri6_cell(), coords, 0.0_dp*coords, pressure, follower, force)
+         end if
+         call check(error, maxval(abs(force(1:3*n) - reshape(expected(:, 1:n), [3*n]))) <= 1.0e-14_dp*norm2(total), &
+                    'TRI'//to_string(n)//' nodal forces off by '// &
+                    to_string(maxval(abs(force(1:3*n) - reshape(expected(:, 1:n), [3*n])))))
+         if (allocated(error)) return
+      end do
+   end subroutine test_flat_triangles
 
    subroutine test_rectangle_weights(error)
       type(error_t), allocatable, intent(out) :: error
@@ -180,7 +253,7 @@ contains
                       2.5_dp, 2.0_dp, 1.0_dp, 0.4_dp, 1.5_dp, 1.0_dp], [3, 4])
       normal = [0.0_dp, 0.0_dp, 1.0_dp]  ! counter-clockwise seen from +z
       call face_area_weights(face, weights)
-      call pressure_load(face, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), pressure, .false., force)
+      call pressure_load(new_quad4_cell(), face, spread([0.0_dp, 0.0_dp, 0.0_dp], 2, 4), pressure, .false., force)
       do a = 1, 4
          do i = 1, 3
             call check_close(error, force(3*(a - 1) + i), -pressure*normal(i)*weights(a), 1.0e-14_dp, &

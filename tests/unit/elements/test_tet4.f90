@@ -20,7 +20,7 @@ module test_tet4
    implicit none
    private
 
-   public :: collect_tet4
+   public :: collect_tet4, check_tangent, rodrigues
 
    real(dp), parameter :: young = 1000.0_dp, poisson = 0.3_dp
    !> A general tetrahedron, edges about 1 (positive volume: node 4 above the face 1-2-3).
@@ -64,16 +64,18 @@ contains
 
    subroutine test_tangent_linear(error)
       type(error_t), allocatable, intent(out) :: error
-      call check_tangent(tet4(kinematics_linear), new_linear_elastic(young, poisson, 0.0_dp), 0.01_dp, error)
+      call check_tangent(tet4(kinematics_linear), new_linear_elastic(young, poisson, 0.0_dp), tet_coords, &
+                         0.01_dp*pattern, error)
    end subroutine test_tangent_linear
 
    !> St. Venant-Kirchhoff and neo-Hookean at displacements of 15 % of the size.
    subroutine test_tangent_total(error)
       type(error_t), allocatable, intent(out) :: error
       call check_tangent(tet4(kinematics_total_lagrangian), new_saint_venant_kirchhoff(young, poisson, 0.0_dp), &
-                         0.15_dp, error)
+                         tet_coords, 0.15_dp*pattern, error)
       if (allocated(error)) return
-      call check_tangent(tet4(kinematics_total_lagrangian), new_neo_hookean(young, poisson, 0.0_dp), 0.15_dp, error)
+      call check_tangent(tet4(kinematics_total_lagrangian), new_neo_hookean(young, poisson, 0.0_dp), tet_coords, &
+                         0.15_dp*pattern, error)
    end subroutine test_tangent_total
 
    !> Von Mises with saturation and kinematic hardening (sigma_y = 2): the point yields at both
@@ -86,39 +88,42 @@ contains
                            'KINH'], [young, poisson, 2.0_dp, 3.0_dp, 50.0_dp, 20.0_dp], material, law_error)
       call check(error, .not. allocated(law_error), 'plastic law')
       if (allocated(error)) return
-      call check_tangent(tet4(kinematics_linear), material, 0.01_dp, error, plastic=.true.)
+      call check_tangent(tet4(kinematics_linear), material, tet_coords, 0.01_dp*pattern, error, plastic=.true.)
       if (allocated(error)) return
-      call check_tangent(tet4(kinematics_total_lagrangian), material, 0.15_dp, error, plastic=.true.)
+      call check_tangent(tet4(kinematics_total_lagrangian), material, tet_coords, 0.15_dp*pattern, error, plastic=.true.)
    end subroutine test_tangent_plastic
 
-   !> K against central differences of fint over the 12 dofs at u = amplitude * pattern; K
-   !> symmetric (the laws here have symmetric tangents). With `plastic`, the point must yield
-   !> (history entry 2, YIELDED, of MAT_3DMisesPlastic).
-   subroutine check_tangent(element, material, amplitude, error, plastic)
+   !> K of the element at displacements `u` (3, n_nodes) against central differences of fint
+   !> over its 3 n_nodes dofs; K symmetric (the laws here have symmetric tangents). With
+   !> `plastic`, some point must yield (history entry 2, YIELDED, of MAT_3DMisesPlastic).
+   subroutine check_tangent(element, material, coords, u, error, plastic)
       type(cell_solid_t), intent(in) :: element
       class(material_t), intent(in) :: material
-      real(dp), intent(in) :: amplitude
+      real(dp), intent(in) :: coords(:, :), u(:, :)
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: plastic
-      real(dp) :: u(3, 4), perturbed(3, 4), fint(12), plus(12), minus(12), tangent(12, 12), difference(12, 12)
-      real(dp) :: state_old(material%n_state(), 1), state_new(material%n_state(), 1), alpha(0), scale
-      integer :: a, i
-      state_old = 0.0_dp
-      u = amplitude*pattern
-      call element%evaluate(material, tet_coords, u, alpha, state_old, state_new, fint, tangent=tangent, error=error)
+      real(dp), allocatable :: perturbed(:, :), fint(:), plus(:), minus(:), tangent(:, :), difference(:, :)
+      real(dp), allocatable :: state_old(:, :), state_new(:, :)
+      real(dp) :: alpha(0), scale
+      integer :: a, i, n
+      n = element%n_nodes()
+      allocate (fint(3*n), plus(3*n), minus(3*n), tangent(3*n, 3*n), difference(3*n, 3*n))
+      allocate (state_old(material%n_state(), element%n_points()), source=0.0_dp)
+      allocate (state_new(material%n_state(), element%n_points()))
+      call element%evaluate(material, coords, u, alpha, state_old, state_new, fint, tangent=tangent, error=error)
       if (allocated(error)) return
       if (present(plastic)) then
-         call check(error, state_new(2, 1) == 1.0_dp, element%name//': the point does not yield')
+         call check(error, any(state_new(2, :) == 1.0_dp), element%name//': no point yields')
          if (allocated(error)) return
       end if
-      do a = 1, 4
+      do a = 1, n
          do i = 1, 3
             perturbed = u
             perturbed(i, a) = u(i, a) + fd_step
-            call element%evaluate(material, tet_coords, perturbed, alpha, state_old, state_new, plus, error=error)
+            call element%evaluate(material, coords, perturbed, alpha, state_old, state_new, plus, error=error)
             if (allocated(error)) return
             perturbed(i, a) = u(i, a) - fd_step
-            call element%evaluate(material, tet_coords, perturbed, alpha, state_old, state_new, minus, error=error)
+            call element%evaluate(material, coords, perturbed, alpha, state_old, state_new, minus, error=error)
             if (allocated(error)) return
             difference(:, 3*(a - 1) + i) = tangent(:, 3*(a - 1) + i) - (plus - minus)/(2.0_dp*fd_step)
          end do

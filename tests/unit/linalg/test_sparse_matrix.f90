@@ -26,7 +26,9 @@ contains
               new_unittest('is_symmetric_detects_asymmetry', test_is_symmetric), &
               new_unittest('pattern_errors', test_pattern_errors), &
               new_unittest('add_element_outside_pattern', test_add_outside_pattern), &
-              new_unittest('pattern_id_changes', test_pattern_id) &
+              new_unittest('pattern_id_changes', test_pattern_id), &
+              new_unittest('mirror_positions_transpose', test_mirror_positions), &
+              new_unittest('move_equation_matches_dense', test_move_equation) &
               ]
    end subroutine collect_sparse_matrix
 
@@ -337,4 +339,90 @@ contains
       call check(error, matrix%memory_bytes() == 8_i8*36 + 8_i8*36 + 8_i8*7 + 4_i8*3 + 4_i8*4, &
                  'memory_bytes = values + row_index + col_ptr + node_ptr + node_adj')
    end subroutine test_pattern_id
+
+   !> On an unsymmetric assembly of 2 x 2 x 1 HEX8 (with an extra pair): the entry at the
+   !> mirror position of every stored entry (row r, column c) is A(c, r) (dense reference),
+   !> and the mirror of the mirror is the position itself.
+   subroutine test_mirror_positions(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(sparse_matrix_t), target :: matrix
+      integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
+      real(dp), pointer, contiguous :: values(:)
+      integer, allocatable :: connectivity(:, :), mirror(:)
+      real(dp), allocatable :: dense(:, :)
+      real(dp) :: block(24, 24)
+      integer(i8) :: state
+      integer :: n_nodes, e, column, p, row
+      call cube_connectivity(2, 2, 1, connectivity, n_nodes)
+      call matrix%create_node_block_pattern(n_nodes, connectivity, extra_pairs=reshape([1, 18], [2, 1]))
+      call matrix%csc_arrays(col_ptr, row_index, values)
+      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
+      state = 4242
+      do e = 1, size(connectivity, 2)
+         call unsymmetric_block(state, block)
+         call matrix%add_element(connectivity(:, e), block, error)
+         if (allocated(error)) return
+         call dense_add(dense, connectivity(:, e), block)
+      end do
+      call matrix%mirror_positions(mirror)
+      call check(error, size(mirror) == size(values), 'one mirror per stored entry')
+      if (allocated(error)) return
+      do column = 1, matrix%n
+         do p = int(col_ptr(column - 1)) + 1, int(col_ptr(column))
+            row = int(row_index(p)) + 1
+            call check(error, values(mirror(p)) == dense(column, row), 'values(mirror(p)) = A(c, r)')
+            if (allocated(error)) return
+            call check(error, mirror(mirror(p)) == p, 'the mirror of the mirror is p')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_mirror_positions
+
+   !> move_equation against the dense elimination: row e times w added to the master rows and
+   !> zeroed, then the same for the column (u_e = 0.5 u_m1 + 0.25 u_m2); a master outside the
+   !> pattern is reported as the missing pair (master node, other node).
+   subroutine test_move_equation(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(sparse_matrix_t) :: matrix
+      integer, allocatable :: connectivity(:, :)
+      real(dp), allocatable :: dense(:, :)
+      real(dp) :: block(24, 24), weights(2)
+      integer(i8) :: state
+      integer :: n_nodes, e, row, column, masters(2), missing(2), dependent
+      call cube_connectivity(2, 1, 1, connectivity, n_nodes)
+      call matrix%create_node_block_pattern(n_nodes, connectivity)
+      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
+      state = 777
+      do e = 1, size(connectivity, 2)
+         call unsymmetric_block(state, block)
+         call matrix%add_element(connectivity(:, e), block, error)
+         if (allocated(error)) return
+         call dense_add(dense, connectivity(:, e), block)
+      end do
+      ! nodes 2, 5 and 8 lie on the shared face (coupled to every node); equation 3*(2-1)+2
+      ! depends on equations 3*(5-1)+1 (node 5, x) and 3*(8-1)+3 (node 8, z)
+      dependent = 5
+      masters = [13, 24]
+      weights = [0.5_dp, 0.25_dp]
+      call matrix%move_equation(dependent, masters, weights, .true., missing)
+      call check(error, all(missing == 0), 'no pair missing')
+      if (allocated(error)) return
+      dense(masters(1), :) = dense(masters(1), :) + weights(1)*dense(dependent, :)
+      dense(masters(2), :) = dense(masters(2), :) + weights(2)*dense(dependent, :)
+      dense(dependent, :) = 0.0_dp
+      call matrix%move_equation(dependent, masters, weights, .false., missing)
+      dense(:, masters(1)) = dense(:, masters(1)) + weights(1)*dense(:, dependent)
+      dense(:, masters(2)) = dense(:, masters(2)) + weights(2)*dense(:, dependent)
+      dense(:, dependent) = 0.0_dp
+      do column = 1, matrix%n
+         do row = 1, matrix%n
+            call check_close(error, matrix%entry(row, column), dense(row, column), 1.0e-14_dp, &
+                             abs_tol=1.0e-14_dp, message='entry equals the dense elimination')
+            if (allocated(error)) return
+         end do
+      end do
+      ! node 1 and node 3 share no element: moving node 1's x onto node 3's x lacks (3, n)
+      call matrix%move_equation(1, [7], [1.0_dp], .true., missing)
+      call check(error, missing(1) == 3 .and. missing(2) > 0, 'missing pair reported with the master node')
+   end subroutine test_move_equation
 end module test_sparse_matrix

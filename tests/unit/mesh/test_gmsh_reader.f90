@@ -35,7 +35,8 @@ contains
                new_unittest('cube_files_are_valid', test_cube_files), &
                new_unittest('parametric_nodes_v41', test_parametric_nodes), &
                new_unittest('tetrahedra_v41', test_tetrahedra), &
-               new_unittest('hexahedra_and_a_tetrahedron', test_tetrahedron)]
+               new_unittest('hexahedra_and_a_tetrahedron', test_tetrahedron), &
+               new_unittest('tet10_node_order', test_tet10)]
    end subroutine collect_gmsh_reader
 
    subroutine collect_gmsh_errors(tests)
@@ -407,12 +408,44 @@ contains
                  .and. all(mesh%element_nodes(3) == [1, 2, 3, 5]), 'the tetrahedron''s cell and nodes')
    end subroutine test_tetrahedron
 
+   !> One 10-node tetrahedron written by gmsh (tet10_gmsh.geo): read as a TET10 whose mid-edge
+   !> nodes 5-10 sit at the middle of the edges 1-2, 2-3, 3-1, 1-4, 2-4, 3-4 (VTK / C3D10 order:
+   !> gmsh's nodes 9 and 10 swapped), 10 connectivity rows, and its 6-node triangle on z = 0
+   !> matched to one face. (gmsh places mid-edge nodes to about 1e-12.)
+   subroutine test_tet10(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: edge_corners(2, 5:10) = reshape([1, 2, 2, 3, 3, 1, 1, 4, 2, 4, 3, 4], [2, 6])
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: read_error
+      integer, allocatable :: nodes(:)
+      integer :: m, s
+      call read_gmsh(data_path('tet10_gmsh.msh'), mesh, read_error)
+      call check(error, .not. allocated(read_error), 'a 10-node tetrahedron is read')
+      if (allocated(error)) return
+      call check(error, mesh%n_elements == 1 .and. mesh%cell_name(1) == 'TET10' .and. &
+                 size(mesh%connectivity, 1) == 10, 'one TET10, 10 connectivity rows')
+      if (allocated(error)) return
+      nodes = mesh%element_nodes(1)
+      do m = 5, 10
+         call check(error, all(abs(mesh%coords(:, nodes(m)) - 0.5_dp*(mesh%coords(:, nodes(edge_corners(1, m))) + &
+                                                                      mesh%coords(:, nodes(edge_corners(2, m))))) &
+                               < 1.0e-9_dp), 'node '//to_string(m)//' is not on its edge''s middle')
+         if (allocated(error)) return
+      end do
+      s = mesh%find_surface('base')
+      call check(error, s > 0, 'surface base')
+      if (allocated(error)) return
+      call check(error, size(mesh%surfaces(s)%faces) == 1 .and. &
+                 all(abs(mesh%coords(3, mesh%face_nodes(1, mesh%surfaces(s)%faces(1)))) < 1.0e-12_dp), &
+                 'the triangle is the face z = 0')
+   end subroutine test_tet10
+
    !> gmsh -order 2 gives 27-node hexahedra (type 12) in the volume and 9-node quadrilaterals
    !> on the surfaces: the volume's error comes first.
    subroutine test_second_order(error)
       type(error_t), allocatable, intent(out) :: error
-      call expect_error('block_order2_v41.msh', '178: only 8-node hexahedra (type 5) and 4-node '// &
-                        'tetrahedra (type 4) are supported: element 9 has type 12', error)
+      call expect_error('block_order2_v41.msh', '178: only 8-node hexahedra (type 5), 4-node '// &
+                        'tetrahedra (type 4) and 10-node tetrahedra (type 11) are supported: element 9 has type 12', error)
    end subroutine test_second_order
 
    subroutine test_unmatched_quad(error)
