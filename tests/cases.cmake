@@ -277,5 +277,7 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/soil/soil.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/soil_insitu/soil_insitu.cmake)
 # The strip footing against Prandtl (tests/footing).
 include(${CMAKE_CURRENT_SOURCE_DIR}/footing/footing.cmake)
+# A buried pipe pulled through sand and clay against ALA and DNV (tests/pipe_soil).
+include(${CMAKE_CURRENT_SOURCE_DIR}/pipe_soil/pipe_soil.cmake)
 # SOLVER Petsc (tests/solver/petsc.cmake).
 include(${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc.cmake)
