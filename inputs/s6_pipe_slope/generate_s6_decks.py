@@ -391,9 +391,10 @@ MUS = ["0.1", "0.3", "0.6"]
 
 
 def deck(mu, mesh, counts, title, ten_x=True, gravity10=False, pipe_end_free=False,
-         results="VTK Yes  LISTING Yes  HDF5 Yes"):
+         results="VTK Yes  LISTING Yes  HDF5 Yes", mc_psi=None):
     """One deck's text: the benchmark deck, or a variant (steps 1-2 only, the soil's weight
-    raised with the loads, the pipe's end z = 0 free axially)."""
+    raised with the loads, the pipe's end z = 0 free axially, Mohr-Coulomb soil with the
+    dilation angle mc_psi)."""
     pair = "EPSN 1.0e3 EPST 1.0e2 MU %s GAPTOL 1.0e-6" % mu
     text = HEADER.format(title=title, mesh=mesh, counts=counts[mesh],
                          contact=pair + " (NORMALS default)", n3=18)
@@ -410,7 +411,25 @@ def deck(mu, mesh, counts, title, ten_x=True, gravity10=False, pipe_end_free=Fal
         text = text.replace(" u_z = 0 at z = 0 (soil and pipe: the buried line continues)",
                             " u_z = 0 at z = 0 on the soil only (the pipe's end z = 0 free axially)")
         body = body.replace("SET pipe_z0       DOF 0 0 1 VAL 0.0 0.0 0.0\n", "")
+    if mc_psi is not None:
+        text, body = mohr_coulomb_soil(text, body, mc_psi)
     return text + body
+
+
+def mohr_coulomb_soil(text, body, psi):
+    """The soil Mohr-Coulomb with the seed's strength (its Table 3 check: c = 0.020 MPa,
+    phi = 30 degrees), dilation angle psi, perfectly plastic, no tension cut-off; HEX8 EAS 3
+    (EAS 9 and 21 lose the enhanced stiffness where points become perfectly plastic:
+    docs/verification/strip_footing.md)."""
+    text = text.replace(" linear elastic, unit weight 0.018 MN/m^3 (DENS 0.018 with GRAVITY 0 -1 0), HEX8 EAS 9.",
+                        " Mohr-Coulomb (the seed's c = 0.020, phi = 30 degrees), psi = %s degrees,\n"
+                        " perfectly plastic, no tension cut-off, unit weight 0.018 MN/m^3 (DENS 0.018\n"
+                        " with GRAVITY 0 -1 0), HEX8 EAS 3 (plastic soil)." % psi)
+    body = body.replace("MAT 1 MAT_Struct_LinearElastic YOUNG 50.0 NUE 0.3 DENS 0.018                 // soil",
+                        "MAT 1 MAT_3DMohrCoulomb YOUNG 50.0 NUE 0.3 COHESION 0.020 PHI 30.0 PSI %s DENS 0.018"
+                        "  // soil" % psi)
+    body = body.replace("SET soil SOLID HEX8 EAS 9 MAT 1", "SET soil SOLID HEX8 EAS 3 MAT 1")
+    return text, body
 
 
 def write_decks(counts):
@@ -432,6 +451,18 @@ def write_decks(counts):
     # the short deck of the default test: the coarse mesh, mu = 0.3, steps 1 and 2 only (to 1 x)
     write("s6_mu0.3_1x", deck("0.3", coarse, counts, "mu = 0.3, steps 1 and 2 only (to 1 x: the "
                               "default test).", ten_x=False, results="VTK No  LISTING Yes  HDF5 No"))
+    # the soil Mohr-Coulomb instead of elastic (the seed's after-the-fact check made a model):
+    # a low dilation psi = 5 and associated flow psi = 30, the seed's loads to 10 x; steps 1-2
+    # only for the default test; and the soil's weight also raised to 10 x
+    for psi, tag in (("5.0", ""), ("30.0", "_psi30")):
+        write("s6_mu0.3_mc%s" % tag, deck("0.3", coarse, counts, "mu = 0.3, Mohr-Coulomb soil, "
+                                          "psi = %s." % psi, mc_psi=psi))
+    write("s6_mu0.3_1x_mc", deck("0.3", coarse, counts, "mu = 0.3, Mohr-Coulomb soil, psi = 5.0, "
+                                 "steps 1 and 2 only (to 1 x: a default test).", ten_x=False,
+                                 results="VTK No  LISTING Yes  HDF5 Yes", mc_psi="5.0"))
+    write("s6_mu0.3_g10_mc", deck("0.3", coarse, counts, "mu = 0.3, Mohr-Coulomb soil, psi = 5.0, "
+                                  "soil weight also raised to 10 x in step 3.", gravity10=True,
+                                  mc_psi="5.0"))
 
 
 def write(name, text):

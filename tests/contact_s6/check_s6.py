@@ -23,7 +23,12 @@ Checks, each printing PASS/FAIL:
   regression values in FILE (1e-6 of the largest value of the row);
 - with --plastic: at the last increment every integration point of the pipe has yielded
   (HDF5 fields/yielded) and every pipe element's mean von Mises stress exceeds sigma_y = 420
-  (the seed: "von Mises everywhere above 420, fully plastic").
+  (the seed: "von Mises everywhere above 420, fully plastic");
+- with --mohr-coulomb C,PHI (the soil Mohr-Coulomb, cohesion C, friction angle PHI degrees): at
+  the last increment the soil's plastic zone is not empty (HDF5 fields/yielded; the
+  after-the-fact check of the elastic soil fails already at 1 x, s6.md) and no soil
+  integration point lies beyond the yield surface, f <= 1e-6 C (postproc/mohr_coulomb.py's
+  f, tension positive), the yielded ones on it, |f| <= 1e-6 C.
 """
 import argparse
 import csv
@@ -34,6 +39,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "inputs", "s6_pipe_slope"))
+sys.path.insert(0, os.path.join(ROOT, "postproc"))
 import generate_s6_decks as geo  # noqa: E402
 
 UNIT_WEIGHT = 0.018
@@ -85,6 +91,30 @@ def row_at(rows, t):
     return None
 
 
+def check_soil_mohr_coulomb(path, cohesion, phi):
+    """The soil's plastic zone at the last increment, and its stresses on or inside the
+    Mohr-Coulomb surface."""
+    import h5py
+    import numpy as np
+    from mohr_coulomb import mohr_coulomb
+    with h5py.File(path, "r") as f:
+        g = f["increments"][sorted(f["increments"].keys())[-1]]
+        soil = f["mesh/element_sets/soil"][:] - 1
+        yielded = g["fields/yielded"][:][soil].ravel() > 0
+        s = g["stress"][:][soil].reshape(-1, 6)        # Voigt xx yy zz xy xz yz
+    tensor = np.stack([s[:, [0, 3, 4]], s[:, [3, 1, 5]], s[:, [4, 5, 2]]], axis=1)
+    principal = np.linalg.eigvalsh(tensor)[:, ::-1]    # s1 >= s2 >= s3
+    f_mc = mohr_coulomb(principal, cohesion, phi)
+    tol = 1e-6 * cohesion
+    check(bool(yielded.any()), "the soil's plastic zone is not empty (%d of %d integration points "
+          "yielded)" % (int(yielded.sum()), yielded.size))
+    check(f_mc.max() <= tol, "no soil point beyond the Mohr-Coulomb surface (largest f = %.2e, "
+          "tolerance %.1e)" % (f_mc.max(), tol))
+    if yielded.any():
+        worst = np.abs(f_mc[yielded]).max()
+        check(worst <= tol, "the yielded soil points lie on the surface (largest |f| = %.2e)" % worst)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("outdir")
@@ -95,6 +125,9 @@ def main():
     ap.add_argument("--axially-free", action="store_true",
                     help="the pipe's end z = 0 is free axially: the open-span hoop displacement "
                          "lies between the plane-strain and the open-ends (sigma_z = 0) values")
+    ap.add_argument("--mohr-coulomb", metavar="C,PHI",
+                    help="the soil is Mohr-Coulomb (cohesion, friction angle in degrees): its "
+                         "plastic zone is not empty and its stresses admissible")
     args = ap.parse_args()
     out, base = args.outdir, args.base
     rows = history(os.path.join(out, base + "_history.csv"))
@@ -185,6 +218,9 @@ def main():
         check(bool((yielded > 0).all()), "every pipe integration point yielded (%d of %d)"
               % (int((yielded > 0).sum()), yielded.size))
         check(vm.min() > 420.0, "every pipe element's von Mises stress > 420 (least %.1f)" % vm.min())
+    if args.mohr_coulomb:
+        check_soil_mohr_coulomb(os.path.join(out, base + ".h5"),
+                                *(float(v) for v in args.mohr_coulomb.split(",")))
     print("check_s6.py: %d failure(s)" % len(failures))
     return 1 if failures else 0
 

@@ -40,3 +40,17 @@ foreach(mu 0.1 0.3)
   set_tests_properties(contact_s6_mu${mu}_free0 PROPERTIES LABELS "regression;contact;plasticity;slow"
                        TIMEOUT ${scaled_600})
 endforeach()
+
+# The soil Mohr-Coulomb (c = 0.020, phi = 30, psi = 5; s6.md "S6(b) with Mohr-Coulomb soil"):
+# steps 1-2 (5 s on the shared VM) in the default run, with the soil's plastic zone at 1 x not
+# empty and its stresses admissible; the seed's loads to 10 x (25 s) slow.
+add_test(NAME contact_s6_mu0.3_1x_mc
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu0.3_1x_mc.dck ${s6_dir}/check_s6.py --end 2
+                 --mohr-coulomb 0.020,30 --reference ${s6_dir}/reference.txt)
+set_tests_properties(contact_s6_mu0.3_1x_mc PROPERTIES LABELS "regression;contact;plasticity"
+                     TIMEOUT ${scaled_600})
+add_test(NAME contact_s6_mu0.3_mc
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu0.3_mc.dck ${s6_dir}/check_s6.py --plastic
+                 --mohr-coulomb 0.020,30 --reference ${s6_dir}/reference.txt)
+set_tests_properties(contact_s6_mu0.3_mc PROPERTIES LABELS "regression;contact;plasticity;slow"
+                     TIMEOUT ${scaled_600})
