@@ -3,10 +3,11 @@
 !> throughput can be measured on a machine shared with other jobs (wall time then counts
 !> the time the process waits for a core; CPU time does not).
 !>
-!> Usage: p1_assembly_timer DECK [REPEATS [STRAIN]]
-!> With STRAIN (default 0) the displacement is u = (STRAIN x, 0, 0), a uniform uniaxial strain
-!> (beyond the yield strain every integration point of an elastoplastic material returns to
-!> the yield surface in every assembly: the plastic branch's cost).
+!> Usage: p1_assembly_timer DECK [REPEATS [STRAIN [SHEAR]]]
+!> With STRAIN and SHEAR (default 0) the displacement is u = (STRAIN x + SHEAR z, 0, 0), a
+!> uniform uniaxial strain plus a simple shear gamma_xz = SHEAR (beyond the yield strain every
+!> integration point of an elastoplastic material returns to the yield surface in every
+!> assembly: the plastic branch's cost).
 !> For REPEATS assemblies (default 5) of fint + tangent at that u it prints, per assembly,
 !> the best CPU and wall time and the elements per CPU second; then the same for the
 !> element kernel alone (evaluate, no scatter) to split kernel and scatter cost.
@@ -28,11 +29,11 @@ program p1_assembly_timer
    character(len=4096) :: deck_path, argument
    real(dp), allocatable :: fint(:)
    real(dp) :: cpu_start, cpu_end, wall_start, best_cpu, best_wall, kernel_cpu, kernel_wall
-   real(dp) :: checksum, strain
+   real(dp) :: checksum, strain, shear
    integer :: repeats, r, n_elements, node
 
    if (command_argument_count() < 1) then
-      write (*, '(a)') 'usage: p1_assembly_timer DECK [REPEATS [STRAIN]]'
+      write (*, '(a)') 'usage: p1_assembly_timer DECK [REPEATS [STRAIN [SHEAR]]]'
       error stop 2
    end if
    call get_command_argument(1, deck_path)
@@ -45,6 +46,11 @@ program p1_assembly_timer
    if (command_argument_count() >= 3) then
       call get_command_argument(3, argument)
       read (argument, *) strain
+   end if
+   shear = 0.0_dp
+   if (command_argument_count() >= 4) then
+      call get_command_argument(4, argument)
+      read (argument, *) shear
    end if
 
    call read_deck(trim(deck_path), model, error)
@@ -65,7 +71,7 @@ program p1_assembly_timer
    allocate (fint(3*model%mesh%n_nodes))
    n_elements = model%mesh%n_elements
    do node = 1, model%mesh%n_nodes
-      state%u(3*node - 2) = strain*model%mesh%coords(1, node)
+      state%u(3*node - 2) = strain*model%mesh%coords(1, node) + shear*model%mesh%coords(3, node)
    end do
 
    ! warm-up: first touch of the matrix values and of every element's data
