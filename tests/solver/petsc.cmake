@@ -7,7 +7,6 @@ if(FRIX_PETSC)
   set(petsc_cases
     s1_deformable_base ${PROJECT_SOURCE_DIR}/inputs/s1_block/s1_deformable_base.dck
     s4_block ${PROJECT_SOURCE_DIR}/inputs/s4_block/s4_block.dck
-    s4b_block ${PROJECT_SOURCE_DIR}/inputs/s4_block/s4b_block.dck
     v5_2pass ${PROJECT_SOURCE_DIR}/inputs/v5_contact_patch/v5_u3_2pass.dck
     v6_hertz ${PROJECT_SOURCE_DIR}/inputs/v6_hertz/v6_hertz.dck
     block_tension ${PROJECT_SOURCE_DIR}/inputs/examples/block_tension/block_tension.dck)
