@@ -175,7 +175,7 @@ add_test(NAME necking_bar_coarse_eas9_peak
                  ${NECKING_DIR}/necking_bar_coarse_eas9_peak.dck
                  --script ${NECKING_DIR}/necking_curve.py
                  "${NECKING_DIR}/necking_bar_coarse.msh -o /dev/null --check-peak 613.76 0.015")
-set_tests_properties(necking_bar_coarse_eas9_peak PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_300})
+set_tests_properties(necking_bar_coarse_eas9_peak PROPERTIES LABELS "regression;plasticity;long" TIMEOUT ${scaled_300})
 add_test(NAME necking_bar_coarse_eas9
          COMMAND bash ${VERIFICATION_DIR}/run_case.sh ${FRIX_BIN}
                  ${NECKING_DIR}/necking_bar_coarse_eas9.dck
