@@ -29,7 +29,6 @@ while [ $# -gt 0 ]; do
 done
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 base=$(basename "$deck" .dck)
 deck_dir=$(cd "$(dirname "$deck")" && pwd)
 # the copy stays next to the original so that its mesh files are found

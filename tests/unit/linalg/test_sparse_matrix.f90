@@ -122,20 +122,14 @@ contains
       real(dp), pointer, contiguous :: values(:)
       integer, allocatable :: connectivity(:, :)
       real(dp), allocatable :: dense(:, :)
-      real(dp) :: block(24, 24)
       integer(i8) :: state
-      integer :: n_nodes, e, row, column
+      integer :: n_nodes, row, column
       call cube_connectivity(2, 1, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
       call matrix%csc_arrays(col_ptr, row_index, values)
-      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
       state = 12345
-      do e = 1, size(connectivity, 2)
-         call unsymmetric_block(state, block)
-         call matrix%add_element(connectivity(:, e), block, error)
-         if (allocated(error)) return
-         call dense_add(dense, connectivity(:, e), block)
-      end do
+      call assemble_unsymmetric(matrix, connectivity, state, dense, error)
+      if (allocated(error)) return
       do column = 1, matrix%n
          do row = 1, matrix%n
             call check(error, matrix%entry(row, column) == dense(row, column), 'entry equals dense assembly')
@@ -179,18 +173,13 @@ contains
       type(sparse_matrix_t) :: matrix
       integer, allocatable :: connectivity(:, :)
       real(dp), allocatable :: dense(:, :), x(:, :), y(:), y_dense(:)
-      real(dp) :: block(24, 24)
       integer(i8) :: state
-      integer :: n_nodes, e, i
+      integer :: n_nodes, i
       call cube_connectivity(2, 2, 2, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
-      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
       state = 777
-      do e = 1, size(connectivity, 2)
-         call unsymmetric_block(state, block)
-         call matrix%add_element(connectivity(:, e), block)
-         call dense_add(dense, connectivity(:, e), block)
-      end do
+      call assemble_unsymmetric(matrix, connectivity, state, dense, error)
+      if (allocated(error)) return
       allocate (x(matrix%n, 1), y(matrix%n))
       call fill_vector(state, x)
       call matrix%multiply(x(:, 1), y)
@@ -350,20 +339,14 @@ contains
       real(dp), pointer, contiguous :: values(:)
       integer, allocatable :: connectivity(:, :), mirror(:)
       real(dp), allocatable :: dense(:, :)
-      real(dp) :: block(24, 24)
       integer(i8) :: state
-      integer :: n_nodes, e, column, p, row
+      integer :: n_nodes, column, p, row
       call cube_connectivity(2, 2, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity, extra_pairs=reshape([1, 18], [2, 1]))
       call matrix%csc_arrays(col_ptr, row_index, values)
-      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
       state = 4242
-      do e = 1, size(connectivity, 2)
-         call unsymmetric_block(state, block)
-         call matrix%add_element(connectivity(:, e), block, error)
-         if (allocated(error)) return
-         call dense_add(dense, connectivity(:, e), block)
-      end do
+      call assemble_unsymmetric(matrix, connectivity, state, dense, error)
+      if (allocated(error)) return
       call matrix%mirror_positions(mirror)
       call check(error, size(mirror) == size(values), 'one mirror per stored entry')
       if (allocated(error)) return
@@ -386,19 +369,14 @@ contains
       type(sparse_matrix_t) :: matrix
       integer, allocatable :: connectivity(:, :)
       real(dp), allocatable :: dense(:, :)
-      real(dp) :: block(24, 24), weights(2)
+      real(dp) :: weights(2)
       integer(i8) :: state
-      integer :: n_nodes, e, row, column, masters(2), missing(2), dependent
+      integer :: n_nodes, row, column, masters(2), missing(2), dependent
       call cube_connectivity(2, 1, 1, connectivity, n_nodes)
       call matrix%create_node_block_pattern(n_nodes, connectivity)
-      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
       state = 777
-      do e = 1, size(connectivity, 2)
-         call unsymmetric_block(state, block)
-         call matrix%add_element(connectivity(:, e), block, error)
-         if (allocated(error)) return
-         call dense_add(dense, connectivity(:, e), block)
-      end do
+      call assemble_unsymmetric(matrix, connectivity, state, dense, error)
+      if (allocated(error)) return
       ! nodes 2, 5 and 8 lie on the shared face (coupled to every node); equation 3*(2-1)+2
       ! depends on equations 3*(5-1)+1 (node 5, x) and 3*(8-1)+3 (node 8, z)
       dependent = 5
@@ -425,4 +403,23 @@ contains
       call matrix%move_equation(1, [7], [1.0_dp], .true., missing)
       call check(error, missing(1) == 3 .and. missing(2) > 0, 'missing pair reported with the master node')
    end subroutine test_move_equation
+
+   !> Pseudo-random unsymmetric element blocks (seeded by `state`, advanced) added to `matrix`
+   !> and to the dense reference `dense` (allocated here) in the same order.
+   subroutine assemble_unsymmetric(matrix, connectivity, state, dense, error)
+      type(sparse_matrix_t), intent(inout) :: matrix
+      integer, intent(in) :: connectivity(:, :)
+      integer(i8), intent(inout) :: state
+      real(dp), allocatable, intent(out) :: dense(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: block(3*size(connectivity, 1), 3*size(connectivity, 1))
+      integer :: e
+      allocate (dense(matrix%n, matrix%n), source=0.0_dp)
+      do e = 1, size(connectivity, 2)
+         call unsymmetric_block(state, block)
+         call matrix%add_element(connectivity(:, e), block, error)
+         if (allocated(error)) return
+         call dense_add(dense, connectivity(:, e), block)
+      end do
+   end subroutine assemble_unsymmetric
 end module test_sparse_matrix
