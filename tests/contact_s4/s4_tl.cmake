@@ -5,4 +5,4 @@
 add_test(NAME contact_s4b_tl
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/contact_s4/s4_tl_run.sh ${FRIX_BIN}
                  ${PROJECT_SOURCE_DIR}/inputs/s4_block/s4b_block_tl.dck)
-set_tests_properties(contact_s4b_tl PROPERTIES LABELS "regression;contact")
+set_tests_properties(contact_s4b_tl PROPERTIES LABELS "regression;contact;long")

@@ -17,7 +17,7 @@ endfunction()
 
 # Default run: phi = 20 degrees, smooth, coarse mesh (384 HEX8 EAS 3), 40 increments, about 350
 # Newton iterations, 12 s CPU; within 5 % of Prandtl (measured +4.83 %).
-footing_test(footing_phi20_smooth 20 0.05 "regression;plasticity" ${scaled_300})
+footing_test(footing_phi20_smooth 20 0.05 "regression;plasticity;long" ${scaled_300})
 
 # Slow: the other coarse smooth decks (measured +4.97 % at phi = 0 with 33 cut-backs, 28 s;
 # +4.87 % at phi = 30, 13 s) and the fine smooth decks (960 HEX8; measured +2.54 %, +2.54 %,
