@@ -179,7 +179,9 @@ contains
    !> Eigenvalues and orthonormal eigenvectors (columns) of a symmetric 3 x 3 matrix by cyclic
    !> Jacobi rotations (Golub & Van Loan, Matrix Computations, 4th ed., 8.5): each rotation
    !> zeroes one off-diagonal entry; sweeps until the off-diagonal part is below 1e-15 of the
-   !> matrix (quadratic convergence: 4-6 sweeps).
+   !> matrix (quadratic convergence: 4-6 sweeps). An entry below 1e-15 / sqrt(6) of the matrix
+   !> is not rotated (three such entries pass the exit test): a nearly diagonal matrix, as a
+   !> strain with round-off shears, costs no rotation for them.
    pure subroutine symmetric_eigen3(matrix, eigenvalues, eigenvectors)
       real(dp), intent(in) :: matrix(3, 3)
       real(dp), intent(out) :: eigenvalues(3)
@@ -187,6 +189,8 @@ contains
       real(dp) :: a(3, 3), scale, theta, t, c, s, column_p(3), column_q(3)
       integer :: sweep, p, q, pair
       integer, parameter :: pair_p(3) = [1, 1, 2], pair_q(3) = [2, 3, 3]
+      !> sqrt(2 * 3 negligible^2) = 1e-15, the exit test's bound on the off-diagonal norm
+      real(dp), parameter :: negligible = 1.0e-15_dp/sqrt(6.0_dp)
       a = 0.5_dp*(matrix + transpose(matrix))
       eigenvectors = 0.0_dp
       do p = 1, 3
@@ -198,7 +202,7 @@ contains
          do pair = 1, 3
             p = pair_p(pair)
             q = pair_q(pair)
-            if (a(p, q) == 0.0_dp) cycle
+            if (abs(a(p, q)) <= negligible*scale) cycle
             ! t = tan(phi), the smaller root of t^2 + 2 theta t - 1 = 0; A <- R^T A R with the
             ! rotation R = I + (c - 1)(e_p e_p + e_q e_q) + s (e_p e_q - e_q e_p)
             theta = (a(q, q) - a(p, p))/(2.0_dp*a(p, q))
