@@ -69,16 +69,22 @@ module frix_mohr_coulomb
                                                                  4, 5, 0, 1, 2, 4, 1, 3, 4, 1, 3, 5, 1, 4, 5, &
                                                                  3, 4, 5, 4, 5, 6], [max_active, 12])
 
-   !> The planes' normals and what the returns need: the law's constants (new_planes, built
-   !> with the law) and the cohesion, slope and stress scale of one return.
+   !> The planes' normals and the constants the returns need (new_planes, built with the law).
    type :: planes_t
       real(dp) :: normals(6, 3)     !! a_i (row i): of phi (1-3), the cut-off (4-6)
       real(dp) :: flows(6, 3)       !! b_i (row i): of psi (1-3), the cut-off (4-6)
       real(dp) :: elastic(3, 3)     !! D in principal space
-      real(dp) :: bulk, shear, cohesion, slope, scale
+      real(dp) :: bulk, shear
       real(dp) :: tension           !! t, or huge without a cut-off
       real(dp) :: two_cos           !! 2 cos(phi)
    end type planes_t
+
+   !> The cohesion of one return and what its tests compare with.
+   type :: bound_t
+      real(dp) :: cohesion          !! c at the start of the increment
+      real(dp) :: slope             !! dc/dalpha during the increment
+      real(dp) :: scale             !! of the stresses: 2 c cos(phi) + max |sigma*_a| (+ t)
+   end type bound_t
 
    type, extends(frictional_plastic_t) :: mohr_coulomb_t
       logical :: has_tension = .false.   !! TENSION given
@@ -130,22 +136,19 @@ contains
       real(dp), intent(in) :: cohesion, slope
       type(return_outcome_t), intent(out) :: outcome
       type(error_t), allocatable, intent(out) :: error
-      type(planes_t) :: planes
+      type(bound_t) :: bound
       type(principal_return_t) :: principal
       real(dp) :: strains(3), directions(3, 3), trial(3), dyads(6, 6)
       call principal_strains(elastic_strain, strains, directions)
-      planes = self%planes
-      planes%cohesion = cohesion
-      planes%slope = slope
-      trial = matmul(planes%elastic, strains)
-      planes%scale = planes%two_cos*cohesion + maxval(abs(trial))
-      if (self%has_tension) planes%scale = planes%scale + self%tension
-      if (maxval(excess(planes, trial, planes%cohesion)) <= yield_tolerance*planes%scale) then
+      trial = matmul(self%planes%elastic, strains)
+      bound = bound_t(cohesion, slope, self%planes%two_cos*cohesion + maxval(abs(trial)))
+      if (self%has_tension) bound%scale = bound%scale + self%tension
+      if (maxval(excess(self%planes, trial, cohesion)) <= yield_tolerance*bound%scale) then
          outcome%tangent = hooke_tangent(self%young, self%poisson)
          outcome%stress = matmul(outcome%tangent, elastic_strain)
          return
       end if
-      call principal_return(self, planes, trial, principal, error)
+      call principal_return(self, bound, trial, principal, error)
       if (allocated(error)) return
       outcome%region = principal%region
       outcome%alpha_increment = principal%alpha_increment
@@ -170,7 +173,7 @@ contains
       directions = vectors(:, order)
    end subroutine principal_strains
 
-   !> The planes of the law's constants (cohesion, slope and scale zero).
+   !> The planes of the law's constants.
    pure function new_planes(self) result(planes)
       class(mohr_coulomb_t), intent(in) :: self
       type(planes_t) :: planes
@@ -192,9 +195,6 @@ contains
       do a = 1, 3
          planes%elastic(a, a) = lambda + 2.0_dp*planes%shear
       end do
-      planes%cohesion = 0.0_dp
-      planes%slope = 0.0_dp
-      planes%scale = 0.0_dp
    end function new_planes
 
    !> Rows a_1, a_2, a_3 of f_1, f_2, f_3 (module header) for s = sin(phi) (or sin(psi): b_i).
@@ -207,9 +207,9 @@ contains
    end function plane_vectors
 
    !> The sets of active planes in turn (module header), then the apex.
-   subroutine principal_return(self, planes, trial, principal, error)
+   subroutine principal_return(self, bound, trial, principal, error)
       class(mohr_coulomb_t), intent(in) :: self
-      type(planes_t), intent(in) :: planes
+      type(bound_t), intent(in) :: bound
       real(dp), intent(in) :: trial(3)
       type(principal_return_t), intent(out) :: principal
       type(error_t), allocatable, intent(out) :: error
@@ -217,23 +217,24 @@ contains
       integer :: k
       if (self%has_tension) then
          do k = 1, size(cut_off_sets, 2)
-            call planes_return(planes, trial, cut_off_sets(:, k), principal, valid)
+            call planes_return(self%planes, bound, trial, cut_off_sets(:, k), principal, valid)
             if (valid) return
          end do
       else
          do k = 1, size(plain_sets, 2)
-            call planes_return(planes, trial, plain_sets(:, k), principal, valid)
+            call planes_return(self%planes, bound, trial, plain_sets(:, k), principal, valid)
             if (valid) return
          end do
       end if
-      call apex_return(self, planes, trial, principal, error)
+      call apex_return(self, bound, trial, principal, error)
    end subroutine principal_return
 
    !> The closed-form return onto the planes of `active` (module header); `valid` as there.
    !> Fixed sizes: the unused rows and columns of the set's arrays are zero (an identity block
    !> of the Jacobian), which leaves the active planes' sums as they are.
-   pure subroutine planes_return(planes, trial, active, principal, valid)
+   pure subroutine planes_return(planes, bound, trial, active, principal, valid)
       type(planes_t), intent(in) :: planes
+      type(bound_t), intent(in) :: bound
       real(dp), intent(in) :: trial(3)
       integer, intent(in) :: active(max_active)   !! the active planes, then zeros
       type(principal_return_t), intent(out) :: principal
@@ -244,7 +245,7 @@ contains
       logical :: invertible
       integer :: n, i, k
       n = count(active > 0)
-      trial_excess = excess(planes, trial, planes%cohesion)
+      trial_excess = excess(planes, trial, bound%cohesion)
       normals = 0.0_dp
       flows = 0.0_dp
       hardening = 0.0_dp   ! d(2 c cos(phi)) / d(c) of each plane's bound
@@ -257,7 +258,7 @@ contains
       end do
       jacobian = matmul(normals, flows)
       do i = 1, max_active
-         jacobian(:, i) = jacobian(:, i) + planes%slope*hardening*hardening(i)
+         jacobian(:, i) = jacobian(:, i) + bound%slope*hardening*hardening(i)
          if (i > n) jacobian(i, i) = 1.0_dp
       end do
       call small_inverse(jacobian, n, inverse, invertible)
@@ -267,8 +268,8 @@ contains
       principal%stress = trial - matmul(flows, multipliers)
       principal%alpha_increment = dot_product(hardening, multipliers)
       valid = all(multipliers >= -region_tolerance*maxval(abs(multipliers))) .and. &
-              all(excess(planes, principal%stress, planes%cohesion + planes%slope*principal%alpha_increment) &
-                  <= region_tolerance*planes%scale)
+              all(excess(planes, principal%stress, bound%cohesion + bound%slope*principal%alpha_increment) &
+                  <= region_tolerance*bound%scale)
       principal%derivative = planes%elastic - matmul(flows, matmul(inverse, matmul(normals, planes%elastic)))
       do k = 4, 6   ! on an active cut-off sigma_a = t exactly (free of the round-off above)
          if (.not. any(active == k)) cycle
@@ -305,9 +306,9 @@ contains
    end function region_of
 
    !> sigma = p 1 with p = c(alpha) cot(phi) (module header); needs phi > 0 and psi > 0.
-   subroutine apex_return(self, planes, trial, principal, error)
+   subroutine apex_return(self, bound, trial, principal, error)
       class(mohr_coulomb_t), intent(in) :: self
-      type(planes_t), intent(in) :: planes
+      type(bound_t), intent(in) :: bound
       real(dp), intent(in) :: trial(3)
       type(principal_return_t), intent(out) :: principal
       type(error_t), allocatable, intent(out) :: error
@@ -319,17 +320,17 @@ contains
          call fatal_error(error, self%name//': a stress beyond the apex of the cone needs PSI > 0'//trial_text)
          return
       end if
-      modulus = planes%slope*cos(self%friction_angle)**2/(sin(self%friction_angle)*sin(self%dilation_angle))
+      modulus = bound%slope*cos(self%friction_angle)**2/(sin(self%friction_angle)*sin(self%dilation_angle))
       pressure = sum(trial)/3.0_dp
-      volumetric = (pressure - planes%cohesion/tan(self%friction_angle))/(planes%bulk + modulus)
-      if (.not. (volumetric >= 0.0_dp .and. planes%bulk + modulus > 0.0_dp)) then
+      volumetric = (pressure - bound%cohesion/tan(self%friction_angle))/(self%planes%bulk + modulus)
+      if (.not. (volumetric >= 0.0_dp .and. self%planes%bulk + modulus > 0.0_dp)) then
          call fatal_error(error, self%name//': no return onto the yield surface'//trial_text)
          return
       end if
       principal%alpha_increment = volumetric*cos(self%friction_angle)/sin(self%dilation_angle)
       ! p* - K d eps_v, written as c(alpha) cot(phi): exactly constant for perfect plasticity
-      principal%stress = (planes%cohesion + planes%slope*principal%alpha_increment)/tan(self%friction_angle)
-      principal%derivative = planes%bulk*modulus/(planes%bulk + modulus)
+      principal%stress = (bound%cohesion + bound%slope*principal%alpha_increment)/tan(self%friction_angle)
+      principal%derivative = self%planes%bulk*modulus/(self%planes%bulk + modulus)
       principal%region = region_apex
       principal%tied = .true.
    end subroutine apex_return
