@@ -87,6 +87,11 @@ module frix_hex8
    !> sum_g |G_gk| stress_floor max|C| dV, i.e. below 1e-12 |C| |G| dV, the round-off of S.
    real(dp), parameter :: stress_floor = 1.0e-2_dp
    real(dp), parameter :: plateau_tolerance = 1.0e-10_dp
+   !> Where K_aa is singular: the weight w of the elastic K_aa^el added to it in the local
+   !> Newton steps (K_aa + w K_aa^el, positive definite) and in the condensation (a w small
+   !> against 1 leaves the condensed tangent exact to about w; solve_enhanced_system).
+   real(dp), parameter :: local_regularisation = 1.0_dp
+   real(dp), parameter :: condensation_regularisation = 1.0e-8_dp
 
    !> Voigt rows (11 22 33 12 13 23) and derivative directions of the three nonzero entries
    !> of column i of the linear nodal strain-displacement block B_a (6 x 3).
@@ -102,6 +107,7 @@ module frix_hex8
       real(dp) :: compatible(6, 8) = 0.0_dp                !! compatible strains
       logical :: prestressed = .false.                     !! the points start from `initial`
       real(dp) :: initial(6, 8) = 0.0_dp                   !! sigma0 (S0) at each point
+      real(dp) :: elastic(6, 6) = 0.0_dp   !! the law's elastic moduli D (regularises a singular K_aa)
    end type local_problem_t
 
    !> The local problem evaluated at one alpha.
@@ -266,6 +272,7 @@ contains
          end if
          call enhanced_operators(self%name, coords, volume, n, problem%enhanced, error)
          if (allocated(error)) return
+         call material%elastic_tangent(problem%elastic)
          call solve_enhanced(self%name, material, problem, state_old, state_new, alpha(1:n), point, error)
          if (allocated(error)) return
          total = point%total
@@ -372,7 +379,7 @@ contains
       real(dp), intent(inout) :: alpha(:)
       type(local_point_t), intent(out) :: point
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: direction(max_eas_modes, 1), stiffness(max_eas_modes, max_eas_modes), previous_max
+      real(dp) :: direction(max_eas_modes, 1), previous_max
       integer :: iteration, n
       logical :: singular
       n = problem%n
@@ -382,9 +389,8 @@ contains
       do iteration = 1, max_local_iterations
          if (local_converged(point, n, previous_max)) return
          previous_max = maxval(abs(point%residual(1:n)))
-         call enhanced_stiffness(problem, point%moduli, stiffness(1:n, 1:n))
          direction(1:n, 1) = -point%residual(1:n)
-         call solve_scaled(stiffness(1:n, 1:n), direction(1:n, :), singular)
+         call solve_enhanced_system(problem, point%moduli, local_regularisation, direction(1:n, :), singular)
          if (singular) then
             call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
             return
@@ -628,6 +634,30 @@ contains
       end do
    end subroutine enhanced_stiffness
 
+   !> Solve K_aa X = B (B <- X), K_aa = sum_g G^T C G dV from the points' moduli C
+   !> (solve_scaled). Where K_aa is singular (solve_scaled's pivot test) the system is solved
+   !> with K_aa + weight K_aa^el, K_aa^el = sum_g G^T D G dV from the law's elastic moduli D.
+   pure subroutine solve_enhanced_system(problem, moduli, weight, rhs, singular)
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: moduli(6, 6, 8)
+      real(dp), intent(in) :: weight
+      real(dp), intent(inout) :: rhs(:, :)
+      logical, intent(out) :: singular
+      real(dp) :: stiffness(problem%n, problem%n), matrix(problem%n, problem%n), elastic(problem%n, problem%n)
+      real(dp) :: solved(size(rhs, 1), size(rhs, 2))
+      call enhanced_stiffness(problem, moduli, stiffness)
+      matrix = stiffness
+      solved = rhs
+      call solve_scaled(matrix, solved, singular)
+      if (.not. singular) then
+         rhs = solved
+         return
+      end if
+      call enhanced_stiffness(problem, spread(problem%elastic, 3, 8), elastic)
+      matrix = stiffness + weight*elastic
+      call solve_scaled(matrix, rhs, singular)
+   end subroutine solve_enhanced_system
+
    !> Solve K_aa X = B (B <- X) with K_aa scaled symmetrically by D = diag(|K_aa|)^{-1/2}:
    !> (D K_aa D) (D^{-1} X) = D B. The enhanced modes of a thin, long element differ in size by
    !> (thickness / length)^2 in G and by its square in K_aa (1e-9 at an aspect ratio of 150),
@@ -744,13 +774,12 @@ contains
       real(dp), intent(inout) :: tangent(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: coupling(24, max_eas_modes), solved(max_eas_modes, 24)
-      real(dp) :: stiffness(max_eas_modes, max_eas_modes), weighted(6, max_eas_modes), b_nl(6, 3, 8)
+      real(dp) :: weighted(6, max_eas_modes), b_nl(6, 3, 8)
       integer :: g, a, n
       logical :: singular
       n = problem%n
       coupling(:, 1:n) = 0.0_dp
       solved(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
-      call enhanced_stiffness(problem, moduli, stiffness(1:n, 1:n))
       do g = 1, 8
          call nonlinear_b(deformation(:, :, g), dn_dx(:, :, g), b_nl)
          weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
@@ -763,7 +792,8 @@ contains
          end do
       end do
       if (symmetric) solved(1:n, :) = transpose(coupling(:, 1:n))
-      call solve_scaled(stiffness(1:n, 1:n), solved(1:n, :), singular)
+      call solve_enhanced_system(problem, moduli, merge(condensation_regularisation, local_regularisation, symmetric), &
+                                 solved(1:n, :), singular)
       if (singular) then
          call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
          return
