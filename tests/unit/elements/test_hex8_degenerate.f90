@@ -28,14 +28,16 @@ contains
                             test_apex)]
    end subroutine collect_hex8_degenerate
 
-   function mohr_coulomb(cohesion, phi, psi) result(material)
+   !> MAT_3DMohrCoulomb with E = 1e5, nu = 0.3, perfectly plastic (a subroutine, not a function:
+   !> a polymorphic function result leaks under gfortran 12).
+   subroutine mohr_coulomb(cohesion, phi, psi, material)
       real(dp), intent(in) :: cohesion, phi, psi
-      class(material_t), allocatable :: material
+      class(material_t), allocatable, intent(out) :: material
       type(error_t), allocatable :: law_error
       call create_material('MAT_3DMohrCoulomb', [character(len=8) :: 'YOUNG', 'NUE', 'COHESION', 'PHI', 'PSI'], &
                            [1.0e5_dp, 0.3_dp, cohesion, phi, psi], material, law_error)
       if (allocated(law_error)) error stop 'test_hex8_degenerate: invalid soil'
-   end function mohr_coulomb
+   end subroutine mohr_coulomb
 
    !> The distorted element stretched by 5 % in every direction plus an irregular pattern
    !> (c = 1, phi = 30 degrees, psi = 30 and 10 degrees): the trial mean stress (about 1.2e4)
@@ -56,7 +58,7 @@ contains
       expected = apex*[1.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
       state_old = 0.0_dp
       do k = 1, 2
-         material = mohr_coulomb(1.0_dp, 30.0_dp, psi(k))
+         call mohr_coulomb(1.0_dp, 30.0_dp, psi(k), material)
          do v = 1, size(variants)
             element = new_hex8(variants(v), kinematics_linear)
             alpha = 0.0_dp
