@@ -42,8 +42,31 @@ VTK_TENSOR_INDEX = ((0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2))
 
 #: Faces of an 8-node hexahedron (VTK type 12, the frix/VTK node order), each with its
 #: nodes counter-clockwise seen from outside the element; in frix's face numbering 1..6
-#: (``hex8_face_nodes`` in src/mesh/frix_mesh.f90, the ``faces`` of HDF5 surfaces).
+#: (``hex8_face_nodes`` in src/cells/frix_hex8_cell.f90, the ``faces`` of HDF5 surfaces).
 HEX8_FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
+#: Corner nodes of the faces of a tetrahedron (TET4 and TET10: VTK/Abaqus order), outward,
+#: in frix's face numbering 1..4 (Abaqus S1-S4; ``tet4_face_nodes`` in
+#: src/cells/frix_tet4_cell.f90).
+TET_FACES = ((0, 2, 1), (0, 1, 3), (1, 2, 3), (2, 0, 3))
+
+
+class CellType:
+    """A volume cell as the scripts need it: its meshio name, VTK type code, node count and
+    the corner nodes of its faces (0-based, in frix's face numbering)."""
+
+    def __init__(self, meshio_name, vtk_type, n_nodes, faces):
+        self.meshio_name = meshio_name
+        self.vtk_type = vtk_type
+        self.n_nodes = n_nodes
+        self.faces = faces
+
+
+#: The cells frix writes (src/cells), by meshio name; the table the readers below use.
+CELL_TYPES = {cell.meshio_name: cell for cell in (
+    CellType("hexahedron", 12, 8, HEX8_FACES),
+    CellType("tetra", 10, 4, TET_FACES),
+    CellType("tetra10", 24, 10, TET_FACES))}
+CELL_TYPES_BY_VTK = {cell.vtk_type: cell for cell in CELL_TYPES.values()}
 
 
 class UserError(Exception):
@@ -374,7 +397,8 @@ class ResultSeries:
 
 
 def read_vtu(path):
-    """Read one .vtu with meshio; UserError if missing, unreadable or without hexahedra."""
+    """Read one .vtu with meshio; UserError if missing, unreadable, without volume cells
+    or with a cell type frix does not write."""
     require_file(path, "vtu file")
     import meshio
     try:
@@ -383,14 +407,59 @@ def read_vtu(path):
     except Exception as error:  # meshio raises many types (ReadError, ValueError, KeyError, ...)
         detail = str(error).strip() or "not a valid VTK XML UnstructuredGrid (.vtu) file"
         raise UserError(f"cannot read {path}: {detail}") from None
-    if "hexahedron" not in mesh.cells_dict:
-        raise UserError(f"{path}: no hexahedral (VTK type 12) cells")
+    unknown = sorted({block.type for block in mesh.cells} - set(CELL_TYPES))
+    if unknown:
+        raise UserError(f"{path}: cells of type {', '.join(unknown)}; the scripts read "
+                        f"{', '.join(sorted(CELL_TYPES))}")
+    if not mesh.cells:
+        raise UserError(f"{path}: no cells")
     return mesh
 
 
 def hexahedra(mesh):
-    """Connectivity (n_elements x 8, 0-based point indices) of the .vtu's HEX8 cells."""
-    return np.asarray(mesh.cells_dict["hexahedron"], dtype=int)
+    """Connectivity (n_elements x 8, 0-based point indices) of a .vtu of HEX8 cells only."""
+    if [block.type for block in mesh.cells] != ["hexahedron"] * len(mesh.cells):
+        raise UserError("this script reads meshes of hexahedra (HEX8) only")
+    return np.vstack([np.asarray(block.data, dtype=int) for block in mesh.cells])
+
+
+def mesh_cells(mesh):
+    """The .vtu's cells in file order: a list of (CellType, 0-based node indices) per cell."""
+    return [(CELL_TYPES[block.type], row) for block in mesh.cells
+            for row in np.asarray(block.data, dtype=int)]
+
+
+def meshio_cell_blocks(cells, cell_values=None):
+    """[(CellType, nodes)] as meshio cell blocks (each run of one type a block, the order
+    kept): ([(meshio name, connectivity)], and each array of ``cell_values`` (a dict of
+    per-cell arrays) split into the blocks' lists, as meshio's cell_data wants them)."""
+    blocks, lengths = [], []
+    for cell, nodes in cells:
+        if blocks and blocks[-1][0] == cell.meshio_name:
+            blocks[-1][1].append(nodes)
+            lengths[-1] += 1
+        else:
+            blocks.append((cell.meshio_name, [nodes]))
+            lengths.append(1)
+    splits = np.cumsum(lengths)[:-1]
+    data = {name: np.split(np.asarray(values), splits)
+            for name, values in (cell_values or {}).items()}
+    return [(name, np.asarray(rows, dtype=int)) for name, rows in blocks], data
+
+
+def boundary_faces(cells):
+    """Faces of the given cells [(CellType, nodes)] that belong to one cell only: (list of
+    faces, each an array of its corner point indices, outward; the owner's position in
+    ``cells``)."""
+    counts, faces = {}, []
+    for owner, (cell, nodes) in enumerate(cells):
+        for corners in cell.faces:
+            face = nodes[list(corners)]
+            key = tuple(sorted(face))
+            counts[key] = counts.get(key, 0) + 1
+            faces.append((key, face, owner))
+    single = [(face, owner) for key, face, owner in faces if counts[key] == 1]
+    return [face for face, _ in single], np.array([owner for _, owner in single], dtype=int)
 
 
 def parse_field_spec(spec):
@@ -434,7 +503,7 @@ def field_values(mesh, spec, location="point"):
     if location == "point":
         data = mesh.point_data
     elif location == "cell":
-        data = {key: value[0] for key, value in mesh.cell_data.items()}
+        data = {key: np.concatenate(value) for key, value in mesh.cell_data.items()}
     else:
         raise ValueError(location)
     if name not in data:
@@ -461,10 +530,10 @@ def has_field(mesh, name, location):
 
 
 def cell_array(mesh, name):
-    """Cell data array ``name`` of the (single) HEX8 cell block, or None if absent."""
+    """Cell data array ``name`` over all cells in file order, or None if absent."""
     if name not in mesh.cell_data:
         return None
-    return np.asarray(mesh.cell_data[name][0])
+    return np.concatenate([np.asarray(block) for block in mesh.cell_data[name]])
 
 
 def node_ids(series, mesh, listing=None):
@@ -695,10 +764,26 @@ class H5Results:
                             f"{', '.join(self._names('surfaces')) or 'none'})")
         elements = np.asarray(self._read(f"mesh/surfaces/{name}/elements", "a surface"), dtype=int)
         faces = np.asarray(self._read(f"mesh/surfaces/{name}/faces", "a surface"), dtype=int)
-        connectivity = self.mesh_array("connectivity")
-        nodes = [connectivity[element - 1, corner] - 1
-                 for element, face in zip(elements, faces) for corner in HEX8_FACES[face - 1]]
+        cells = self.cells()
+        nodes = [cells[element - 1][1][corner]
+                 for element, face in zip(elements, faces)
+                 for corner in cells[element - 1][0].faces[face - 1]]
         return np.unique(np.asarray(nodes, dtype=int))
+
+    def cells(self):
+        """The mesh's cells: a list of (CellType, 0-based node numbers) per element, from
+        /mesh/connectivity and /mesh/cell_types (absent: every cell a HEX8)."""
+        connectivity = self.mesh_array("connectivity").astype(int) - 1
+        if "cell_types" in self.file["mesh"]:
+            types = self.mesh_array("cell_types").astype(int)
+        else:
+            types = np.full(len(connectivity), CELL_TYPES["hexahedron"].vtk_type)
+        unknown = sorted(set(types.tolist()) - set(CELL_TYPES_BY_VTK))
+        if unknown:
+            raise UserError(f"{self.path}: VTK cell types {unknown} in /mesh/cell_types; the "
+                            f"scripts read {sorted(CELL_TYPES_BY_VTK)}")
+        return [(CELL_TYPES_BY_VTK[code], row[:CELL_TYPES_BY_VTK[code].n_nodes])
+                for code, row in zip(types, connectivity)]
 
 
 def read_h5_stresses(path, spec="last"):

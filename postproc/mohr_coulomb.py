@@ -91,7 +91,8 @@ def build_parser():
 
 class Geometry:
     """The mesh of the checked result, for --vtk and --element-set: reference ``points``
-    (n, 3), HEX8 ``cells`` (0-based, n_cells x 8), ``displacement`` (n, 3) or None, and
+    (n, 3), ``cells`` (a list of (frix_results.CellType, 0-based nodes) per element),
+    ``displacement`` (n, 3) or None, and
     ``element`` (0-based cell of each stress row; None for nodal rows)."""
 
     def __init__(self, points, cells, displacement, element):
@@ -110,7 +111,7 @@ def h5_geometry(args, gauss, n_points):
         if args.vtk is None:
             return None, members
         points = np.asarray(results.mesh_array("coordinates"), dtype=float)
-        cells = np.asarray(results.mesh_array("connectivity"), dtype=int) - 1
+        cells = results.cells()
         displacement = np.asarray(results.dataset(entry, "displacement"), dtype=float)
     element = np.repeat(np.arange(len(gauss.element_ids)), n_points)
     return Geometry(points, cells, displacement, element), members
@@ -150,7 +151,7 @@ def load_stresses(args):
     description = f"{entry.path} ({entry.label()}, {'nodes' if args.point else 'element means'})"
     displacement = (np.asarray(mesh.point_data["displacement"], dtype=float)
                     if "displacement" in mesh.point_data else None)
-    cells = frix_results.hexahedra(mesh)
+    cells = frix_results.mesh_cells(mesh)
     if args.point:
         stress = np.asarray(mesh.point_data[args.stress_field], dtype=float)
         ids = frix_results.node_ids(series, mesh)
@@ -168,8 +169,8 @@ def load_stresses(args):
 
 
 def write_vtk(path, geometry, rows, ids, blocks, principal, f, failed, points, what):
-    """The checked elements as HEX8 cells (or with nodal rows the whole mesh with point
-    fields) with s1, s2, s3, f, failed, the ids and the displacement (point data)."""
+    """The checked elements as cells of their types (or with nodal rows the whole mesh with
+    point fields) with s1, s2, s3, f, failed, the ids and the displacement (point data)."""
     import meshio
     fields = {"s1": principal[:, 0], "s2": principal[:, 1], "s3": principal[:, 2], "f": f}
     if what == "nodes":
@@ -177,33 +178,36 @@ def write_vtk(path, geometry, rows, ids, blocks, principal, f, failed, points, w
         point_data = dict(fields)
         point_data["failed"] = failed.astype(np.int32)
         point_data["node_id"] = ids.astype(np.int32)
-        used, cells, cell_data = np.arange(len(geometry.points)), geometry.cells, {}
+        used = np.arange(len(geometry.points))
+        cell_blocks, cell_data = frix_results.meshio_cell_blocks(geometry.cells)
     else:
         element = geometry.element[rows]
         kept = np.unique(element)
         # the row of largest f of each element (its worst integration point)
         order = np.lexsort((-f, element))
         first = order[np.searchsorted(element[order], kept)]
-        cell_data = {name: [values[first]] for name, values in fields.items()}
-        cell_data["failed"] = [np.array([failed[element == cell].any() for cell in kept],
-                                        dtype=np.int32)]
-        cell_data["element_id"] = [ids[first].astype(np.int32)]
-        cell_data["block"] = [blocks[first].astype(np.int32)]
+        values = {name: values[first] for name, values in fields.items()}
+        values["failed"] = np.array([failed[element == cell].any() for cell in kept],
+                                    dtype=np.int32)
+        values["element_id"] = ids[first].astype(np.int32)
+        values["block"] = blocks[first].astype(np.int32)
         if points is not None:
-            cell_data["failed_points"] = [np.bincount(np.searchsorted(kept, element[failed]),
-                                                      minlength=kept.size).astype(np.int32)]
-        used = np.unique(geometry.cells[kept])
-        cells = np.searchsorted(used, geometry.cells[kept])
+            values["failed_points"] = np.bincount(np.searchsorted(kept, element[failed]),
+                                                  minlength=kept.size).astype(np.int32)
+        used = np.unique(np.concatenate([geometry.cells[cell][1] for cell in kept]))
+        renumbered = [(geometry.cells[cell][0], np.searchsorted(used, geometry.cells[cell][1]))
+                      for cell in kept]
+        cell_blocks, cell_data = frix_results.meshio_cell_blocks(renumbered, values)
         point_data = {}
     if geometry.displacement is not None:
         point_data["displacement"] = geometry.displacement[used]
-    mesh = meshio.Mesh(geometry.points[used], [("hexahedron", cells)], point_data=point_data,
+    mesh = meshio.Mesh(geometry.points[used], cell_blocks, point_data=point_data,
                        cell_data=cell_data)
     try:
         meshio.vtu.write(path, mesh)
     except OSError as error:
         raise UserError(f"cannot write {path}: {error}") from None
-    return len(cells)
+    return sum(len(connectivity) for _, connectivity in cell_blocks)
 
 
 def main(argv=None):

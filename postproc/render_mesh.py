@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Render the deformed mesh of a frix result, coloured by a field, to a PNG (matplotlib 3D).
 
-Only the boundary faces are drawn (the HEX8 faces that belong to exactly one element), as a
+Only the boundary faces are drawn (the cell faces that belong to exactly one element: the
+quadrilaterals of HEX8, the triangles of TET4 and TET10 by their corners), as a
 Poly3DCollection. Node positions are the reference coordinates plus --scale times the point
 field ``displacement`` (--scale 0: reference shape; --scale auto: the largest displacement
 drawn as 10 % of the bounding-box diagonal). A point field colours each face with the mean of
-its 4 nodes; a cell field (--cell) with the value of its element.
+its corner nodes; a cell field (--cell) with the value of its element.
 
 Field names are those of the .vtu (docs/output.md): von_mises, displacement:2 (z), stress:xx
 or stress:0 (VTK order XX YY ZZ XY YZ XZ), strain:..., reaction:..., or any extra field.
@@ -60,16 +61,6 @@ def build_parser():
     return parser
 
 
-def boundary_faces(connectivity):
-    """Boundary faces of HEX8 cells: (faces (n_faces x 4 point indices), owner element)."""
-    faces = connectivity[:, frix_results.HEX8_FACES].reshape(-1, 4)
-    owners = np.repeat(np.arange(connectivity.shape[0]), len(frix_results.HEX8_FACES))
-    keys = np.sort(faces, axis=1)
-    _, inverse, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
-    single = counts[inverse.ravel()] == 1
-    return faces[single], owners[single]
-
-
 def magnification(text, points, displacement):
     if text.strip().lower() == "auto":
         largest = float(np.max(np.linalg.norm(displacement, axis=1))) if displacement.size else 0.0
@@ -100,7 +91,7 @@ def main(argv=None):
     entry = entries[0]
     mesh = series.mesh(entry)
     points = np.asarray(mesh.points, dtype=float)
-    connectivity = frix_results.hexahedra(mesh)
+    all_cells = frix_results.mesh_cells(mesh)
     displacement = np.asarray(mesh.point_data["displacement"], dtype=float) \
         if "displacement" in mesh.point_data else np.zeros_like(points)
     factor = magnification(args.scale, points, displacement)
@@ -108,7 +99,7 @@ def main(argv=None):
     points, displacement = points[:, drawn], displacement[:, drawn]
     deformed = points + factor * displacement
 
-    cells = np.arange(connectivity.shape[0])
+    cells = np.arange(len(all_cells))
     if args.block:
         try:
             wanted = [int(item) for item in args.block.split(",") if item.strip()]
@@ -120,11 +111,12 @@ def main(argv=None):
         cells = np.flatnonzero(np.isin(np.asarray(block_array).astype(int).ravel(), wanted))
         if cells.size == 0:
             raise UserError(f"--block: no element in block(s) {args.block}")
-    faces, owners = boundary_faces(connectivity[cells])
+    faces, owners = frix_results.boundary_faces([all_cells[cell] for cell in cells])
     if args.cell:
         values = frix_results.field_values(mesh, args.field, "cell")[cells][owners]
     else:
-        values = frix_results.field_values(mesh, args.field, "point")[faces].mean(axis=1)
+        nodal = frix_results.field_values(mesh, args.field, "point")
+        values = np.array([nodal[face].mean() for face in faces])
     low, high = color_range if color_range else (float(values.min()), float(values.max()))
     if high <= low:                      # a constant field: widen so the colormap works
         spread = max(abs(low), 1.0) * 1e-12
@@ -140,14 +132,14 @@ def main(argv=None):
     normalize = colors.Normalize(vmin=low, vmax=high)
     figure = pyplot.figure(figsize=(8, 6))
     axes = figure.add_subplot(projection="3d")
-    collection = Poly3DCollection(deformed[faces], facecolors=colormap(normalize(values)),
+    collection = Poly3DCollection([deformed[face] for face in faces], facecolors=colormap(normalize(values)),
                                   edgecolors="none" if args.no_edges else "k",
                                   linewidths=0.0 if args.no_edges else 0.3)
     axes.add_collection3d(collection)
-    used = np.unique(faces)
+    used = np.unique(np.concatenate(faces))
     shown = deformed[used]
     if args.undeformed:
-        edges = points[faces][:, [0, 1, 2, 3, 0]]
+        edges = [points[np.append(face, face[0])] for face in faces]
         axes.add_collection3d(Line3DCollection(edges, colors="0.6", linewidths=0.4))
         shown = np.vstack([deformed[used], points[used]])
     lower, upper = shown.min(axis=0), shown.max(axis=0)

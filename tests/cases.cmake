@@ -150,7 +150,7 @@ add_test(NAME restart_validation COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restar
 set_tests_properties(restart_validation PROPERTIES LABELS "regression;contact")
 
 # Post-processing scripts run on real frix output (tests/postproc/test_*.sh).
-foreach(script plot_history plot_line render_mesh mohr_coulomb compare_runs)
+foreach(script plot_history plot_line render_mesh mohr_coulomb compare_runs cells)
   add_test(NAME postproc_${script}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/postproc/test_${script}.sh ${FRIX_BIN})
   set_tests_properties(postproc_${script} PROPERTIES LABELS postproc)

@@ -457,6 +457,12 @@ def write_decks(counts):
     for psi, tag in (("5.0", ""), ("30.0", "_psi30")):
         write("s6_mu0.3_mc%s" % tag, deck("0.3", coarse, counts, "mu = 0.3, Mohr-Coulomb soil, "
                                           "psi = %s." % psi, mc_psi=psi))
+    # the other friction coefficients and the refined mesh, psi = 5
+    for mu in ("0.1", "0.6"):
+        write("s6_mu%s_mc" % mu, deck(mu, coarse, counts, "mu = %s, Mohr-Coulomb soil, psi = 5.0."
+                                      % mu, mc_psi="5.0"))
+    write("s6_mu0.3_fine_mc", deck("0.3", "s6_fine.msh", counts, "mu = 0.3, refined mesh, "
+                                   "Mohr-Coulomb soil, psi = 5.0.", mc_psi="5.0"))
     write("s6_mu0.3_1x_mc", deck("0.3", coarse, counts, "mu = 0.3, Mohr-Coulomb soil, psi = 5.0, "
                                  "steps 1 and 2 only (to 1 x: a default test).", ten_x=False,
                                  results="VTK No  LISTING Yes  HDF5 Yes", mc_psi="5.0"))

@@ -21,6 +21,20 @@ foreach(mu 0.5 0.1 0.25)
   set_tests_properties(contact_s3_coarse_mu${mu} PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_300})
 endforeach()
 
+# HEX8 + EAS 9 instead of the seed's EAS 3, mu = 0.1 (smoothed normals): without friction
+# continuation the run stops at t = 0.9935 (the punch corner node 1025 cutting into the
+# foundation); with MU_CONTINUATION 5 3.5 2.5 1.8 1.3 the full load in 6 increments (3 solved
+# through the continuation, 276 Newton iterations, 17-33 s), u_z against the stored value and
+# within 2 % of the EAS 9 mu = 0.5 value. The mu = 0.5 anchor itself (5 s) is slow-labelled.
+add_test(NAME contact_s3_coarse_mu0.1_eas9
+         COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.1_eas9.dck 1101 0.1
+                 --reference ${s3_dir}/reference_coarse_eas9.txt)
+set_tests_properties(contact_s3_coarse_mu0.1_eas9 PROPERTIES LABELS "regression;contact;long" TIMEOUT ${scaled_300})
+add_test(NAME contact_s3_coarse_mu0.5_eas9
+         COMMAND bash ${s3_dir}/run_s3.sh ${FRIX_BIN} ${s3_decks}/s3_coarse_mu0.5_eas9.dck 1101 0.5
+                 --reference ${s3_dir}/reference_coarse_eas9.txt)
+set_tests_properties(contact_s3_coarse_mu0.5_eas9 PROPERTIES LABELS "regression;contact;slow" TIMEOUT ${scaled_300})
+
 # Facet normals, mu = 0.1 with friction continuation (MU_CONTINUATION 5 3.5 2.5 1.8 1.3,
 # docs/solver.md): the run gets past the t = 0.754 of the plain deck to just below the load maximum t = 0.7919 of
 # this discrete model (contact_s3_coarse_mu0.1_path) and stops there in order; measured

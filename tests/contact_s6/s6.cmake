@@ -49,8 +49,17 @@ add_test(NAME contact_s6_mu0.3_1x_mc
                  --mohr-coulomb 0.020,30 --reference ${s6_dir}/reference.txt)
 set_tests_properties(contact_s6_mu0.3_1x_mc PROPERTIES LABELS "regression;contact;plasticity"
                      TIMEOUT ${scaled_600})
-add_test(NAME contact_s6_mu0.3_mc
-         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu0.3_mc.dck ${s6_dir}/check_s6.py --plastic
+# The three friction coefficients to 10 x with it (20 s each): slow.
+foreach(mu 0.1 0.3 0.6)
+  add_test(NAME contact_s6_mu${mu}_mc
+           COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu${mu}_mc.dck ${s6_dir}/check_s6.py --plastic
+                   --mohr-coulomb 0.020,30 --reference ${s6_dir}/reference.txt)
+  set_tests_properties(contact_s6_mu${mu}_mc PROPERTIES LABELS "regression;contact;plasticity;slow"
+                       TIMEOUT ${scaled_600})
+endforeach()
+# The refined mesh (3840 HEX8) with it, psi = 5 (130 s on a quiet 2-core machine): slow.
+add_test(NAME contact_s6_mu0.3_fine_mc
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${s6_decks}/s6_mu0.3_fine_mc.dck ${s6_dir}/check_s6.py --plastic
                  --mohr-coulomb 0.020,30 --reference ${s6_dir}/reference.txt)
-set_tests_properties(contact_s6_mu0.3_mc PROPERTIES LABELS "regression;contact;plasticity;slow"
+set_tests_properties(contact_s6_mu0.3_fine_mc PROPERTIES LABELS "regression;contact;plasticity;slow"
                      TIMEOUT ${scaled_600})

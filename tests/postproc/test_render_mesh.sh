@@ -7,40 +7,62 @@ run_bar_deck
 OUT=$WORK/out
 RENDER=("$PYTHON" "$POSTPROC/render_mesh.py")
 
-# 1. Boundary faces: an n x m x k block of hexahedra has 2 (nm + mk + nk) of them, each
-#    listed once, with the outward orientation (the face normal from the node order points
-#    away from its element's centroid). Checked for 1x1x1 (6), 4x1x1 (18) and 3x2x2 (32).
+# 1. Boundary faces (frix_results.boundary_faces, which render_mesh draws): an n x m x k block
+#    of hexahedra has 2 (nm + mk + nk) of them, the same block with each cube split into six
+#    tetrahedra (Kuhn's split along the main diagonal) twice as many triangles, each listed
+#    once, with the outward orientation (the face normal from the node order points away
+#    from its element's centroid), and on the block's surface. Checked for 1x1x1 (6 / 12),
+#    4x1x1 (18 / 36) and 3x2x2 (32 / 64).
 if message=$("$PYTHON" - "$POSTPROC" <<'PY' 2>&1
+import itertools
 import sys
 sys.path.insert(0, sys.argv[1])
 import numpy as np
-import render_mesh
+import frix_results as fr
 
-def block(nx, ny, nz):
+HEX, TET = fr.CELL_TYPES["hexahedron"], fr.CELL_TYPES["tetra"]
+
+def block(nx, ny, nz, tets):
     node = lambda i, j, k: i + (nx + 1) * (j + (ny + 1) * k)
     points = np.array([[i, j, k] for k in range(nz + 1) for j in range(ny + 1)
                        for i in range(nx + 1)], dtype=float)
-    cells = [[node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
-              node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
-              node(i, j + 1, k + 1)]
-             for k in range(nz) for j in range(ny) for i in range(nx)]
-    return points, np.array(cells)
+    cells = []
+    for k, j, i in itertools.product(range(nz), range(ny), range(nx)):
+        corners = [node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+                   node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                   node(i, j + 1, k + 1)]
+        if not tets(i, j, k):
+            cells.append((HEX, np.array(corners)))
+            continue
+        for path in itertools.permutations(range(3)):   # Kuhn: 0 -> ... -> (1, 1, 1)
+            step, chain = np.zeros(3, dtype=int), [node(i, j, k)]
+            for axis in path:
+                step[axis] = 1
+                chain.append(node(i + step[0], j + step[1], k + step[2]))
+            tet = np.array(chain)
+            a, b, c, d = points[tet]
+            if np.dot(np.cross(b - a, c - a), d - a) < 0:
+                tet[[1, 2]] = tet[[2, 1]]
+            cells.append((TET, tet))
+    return points, cells
 
 for n in [(1, 1, 1), (4, 1, 1), (3, 2, 2)]:
-    points, cells = block(*n)
-    faces, owners = render_mesh.boundary_faces(cells)
-    expected = 2 * (n[0] * n[1] + n[1] * n[2] + n[0] * n[2])
-    assert len(faces) == expected, (n, len(faces), expected)
-    assert len({tuple(sorted(face)) for face in faces}) == expected, "a face listed twice"
-    corners = points[faces]
-    normal = np.cross(corners[:, 2] - corners[:, 0], corners[:, 3] - corners[:, 1])
-    outward = corners.mean(axis=1) - points[cells[owners]].mean(axis=1)
-    assert np.all(np.einsum("ij,ij->i", normal, outward) > 0), "inward face"
-    # every boundary face lies on the block's surface
-    on_surface = np.all([np.any((np.abs(c - 0) < 1e-12) | (np.abs(c - np.array(n)) < 1e-12),
-                                axis=1) for c in corners], axis=1)
-    assert np.all(on_surface), "interior face drawn"
-print("6, 18, 32 outward boundary faces")
+    squares = 2 * (n[0] * n[1] + n[1] * n[2] + n[0] * n[2])
+    for name, tets, expected in [("HEX8", lambda i, j, k: False, squares),
+                                 ("TET4", lambda i, j, k: True, 2 * squares)]:
+        points, cells = block(*n, tets)
+        faces, owners = fr.boundary_faces(cells)
+        assert len(faces) == expected, (name, n, len(faces), expected)
+        assert len({tuple(sorted(face)) for face in faces}) == expected, "a face listed twice"
+        for face, owner in zip(faces, owners):
+            corners = points[face]
+            normal = np.cross(corners[1] - corners[0], corners[-1] - corners[0])
+            outward = corners.mean(axis=0) - points[cells[owner][1]].mean(axis=0)
+            assert np.dot(normal, outward) > 0, (name, n, "inward face")
+            on_surface = np.any((np.abs(corners) < 1e-12) | (np.abs(corners - np.array(n)) < 1e-12),
+                                axis=0)
+            assert on_surface.any(), (name, n, "interior face drawn")
+print("HEX8 6, 18, 32; TET4 12, 36, 64 outward boundary faces")
 PY
 ); then pass "boundary_faces: $message"; else fail "boundary_faces: $message"; fi
 
