@@ -37,9 +37,8 @@ module frix_mortar_assembly
       logical :: curved = .false.
    end type mortar_patch_t
 
-   !> Angle (rad) between the normals of two faces of a node's patch (slave faces at the node,
-   !> master faces paired with them, the latter turned round) above which the node's tangent is
-   !> the complete one. The first-order tangent leaves out terms of relative order h / R
+   !> Angle (rad) between the normals of two slave faces at a node, or of two master faces paired
+   !> with them, above which the node's tangent is the complete one. The first-order tangent leaves out terms of relative order h / R
    !> (docs/contact.md, "Tangent"), which is about this angle between neighbouring faces; with
    !> it the flat patch tests converge in 2 iterations and Hertz (faces 0.008 rad apart) in 30,
    !> and with the complete tangent there the cost of the differences dominates the run.
@@ -208,29 +207,33 @@ contains
          pass%committed_mortar_rows%nodes(pass%committed_mortar_rows%start(i) + 1:pass%committed_mortar_rows%start(i + 1)))
    end subroutine node_patch
 
-   !> Whether the unit normals (at the centres) of the faces slave_faces and master_faces (the
-   !> latter turned round) differ by more than curved_angle between any two of them.
+   !> Whether the unit normals (at the centres) of two of the slave faces, or of two of the
+   !> master faces, differ by more than curved_angle (a surface turning by about h / R from
+   !> face to face).
    logical function faces_turn(x, slave_faces, master_faces) result(turn)
       real(dp), intent(in) :: x(:, :)
       integer, intent(in) :: slave_faces(:, :), master_faces(:, :)
-      real(dp) :: normal(3, size(slave_faces, 2) + size(master_faces, 2))
-      integer :: f, g, n_slave
-      n_slave = size(slave_faces, 2)
-      do f = 1, n_slave
-         normal(:, f) = face_normal(x(:, slave_faces(:, f)), [0.0_dp, 0.0_dp])
-      end do
-      do f = 1, size(master_faces, 2)
-         normal(:, n_slave + f) = -face_normal(x(:, master_faces(:, f)), [0.0_dp, 0.0_dp])
+      turn = surface_turns(x, slave_faces) .or. surface_turns(x, master_faces)
+   end function faces_turn
+
+   !> Whether the unit normals (at the centres) of two of `faces` differ by more than
+   !> curved_angle (collapsed faces, of zero normal, compare as parallel).
+   logical function surface_turns(x, faces) result(turn)
+      real(dp), intent(in) :: x(:, :)
+      integer, intent(in) :: faces(:, :)
+      real(dp) :: normal(3, size(faces, 2))
+      integer :: f, g
+      do f = 1, size(faces, 2)
+         normal(:, f) = face_normal(x(:, faces(:, f)), [0.0_dp, 0.0_dp])
       end do
       turn = .false.
-      do f = 1, size(normal, 2)
-         do g = f + 1, size(normal, 2)
-            ! collapsed faces (zero normal) compare as parallel
+      do f = 1, size(faces, 2)
+         do g = f + 1, size(faces, 2)
             if (norm2(normal(:, f)) == 0.0_dp .or. norm2(normal(:, g)) == 0.0_dp) cycle
             turn = turn .or. dot_product(normal(:, f), normal(:, g)) < cos(curved_angle)
          end do
       end do
-   end function faces_turn
+   end function surface_turns
 
    !> list = list and those of `more` not yet in it, in order.
    pure subroutine add_unique(list, more)
