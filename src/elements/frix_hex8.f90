@@ -87,6 +87,13 @@ module frix_hex8
    !> sum_g |G_gk| stress_floor max|C| dV, i.e. below 1e-12 |C| |G| dV, the round-off of S.
    real(dp), parameter :: stress_floor = 1.0e-2_dp
    real(dp), parameter :: plateau_tolerance = 1.0e-10_dp
+   !> Where K_aa is singular: the weight w of the elastic K_aa^el added to it (K_aa + w K_aa^el,
+   !> positive definite; solve_enhanced_system) in the local steps and in the condensation of an
+   !> unsymmetric tangent (local_regularisation), and in the condensation of a symmetric one
+   !> (condensation_regularisation: the null space of K_aa lies in that of K_ua there, and a w
+   !> small against 1 leaves the condensed tangent exact to about w; docs/elements.md).
+   real(dp), parameter :: local_regularisation = 1.0_dp
+   real(dp), parameter :: condensation_regularisation = 1.0e-8_dp
 
    !> Voigt rows (11 22 33 12 13 23) and derivative directions of the three nonzero entries
    !> of column i of the linear nodal strain-displacement block B_a (6 x 3).
@@ -102,6 +109,7 @@ module frix_hex8
       real(dp) :: compatible(6, 8) = 0.0_dp                !! compatible strains
       logical :: prestressed = .false.                     !! the points start from `initial`
       real(dp) :: initial(6, 8) = 0.0_dp                   !! sigma0 (S0) at each point
+      real(dp) :: elastic(6, 6) = 0.0_dp   !! the law's elastic moduli D (regularises a singular K_aa)
    end type local_problem_t
 
    !> The local problem evaluated at one alpha.
@@ -121,6 +129,7 @@ module frix_hex8
       integer :: side = 0        !! which end moved last (-1 low, 1 high), for the Illinois rule
       real(dp) :: s = 1.0_dp     !! the trial step
       real(dp) :: kept_s = 0.0_dp   !! the last admissible trial (0: none yet)
+      real(dp) :: max_s = max_step_length   !! the longest step tried
    contains
       procedure :: start => line_search_start
       procedure :: accepts => line_search_accepts
@@ -266,6 +275,7 @@ contains
          end if
          call enhanced_operators(self%name, coords, volume, n, problem%enhanced, error)
          if (allocated(error)) return
+         call material%elastic_tangent(problem%elastic)
          call solve_enhanced(self%name, material, problem, state_old, state_new, alpha(1:n), point, error)
          if (allocated(error)) return
          total = point%total
@@ -372,9 +382,9 @@ contains
       real(dp), intent(inout) :: alpha(:)
       type(local_point_t), intent(out) :: point
       type(error_t), allocatable, intent(out) :: error
-      real(dp) :: direction(max_eas_modes, 1), stiffness(max_eas_modes, max_eas_modes), previous_max
+      real(dp) :: direction(max_eas_modes, 1), previous_max
       integer :: iteration, n
-      logical :: singular
+      logical :: singular, regularised
       n = problem%n
       call evaluate_local(name, material, problem, alpha(1:n), state_old, state_new, point, error)
       if (allocated(error)) return
@@ -382,15 +392,15 @@ contains
       do iteration = 1, max_local_iterations
          if (local_converged(point, n, previous_max)) return
          previous_max = maxval(abs(point%residual(1:n)))
-         call enhanced_stiffness(problem, point%moduli, stiffness(1:n, 1:n))
          direction(1:n, 1) = -point%residual(1:n)
-         call solve_scaled(stiffness(1:n, 1:n), direction(1:n, :), singular)
+         call solve_enhanced_system(problem, point%moduli, local_regularisation, direction(1:n, :), singular, &
+                                    regularised)
          if (singular) then
             call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
             return
          end if
-         call enhanced_line_search(name, material, problem, direction(1:n, 1), state_old, state_new, &
-                                   alpha(1:n), point, error)
+         call enhanced_line_search(name, material, problem, direction(1:n, 1), merge(1.0_dp, max_step_length, &
+                                   regularised), state_old, state_new, alpha(1:n), point, error)
          if (allocated(error)) return
       end do
       if (local_converged(point, n, previous_max)) return
@@ -483,13 +493,15 @@ contains
    !> on |h|, for which the Newton step is a descent direction whatever K_aa; Dennis & Schnabel,
    !> Numerical Methods for Unconstrained Optimization and Nonlinear Equations, 6.3). A trial
    !> after which the material fails (det C <= 0 under a large plastic flow, say) counts as an
-   !> overshoot. After max_line_search_trials the last admissible trial is kept.
-   subroutine enhanced_line_search(name, material, problem, direction, state_old, state_new, alpha, &
+   !> overshoot. After max_line_search_trials the last admissible trial is kept. A step from a
+   !> regularised K_aa (solve_enhanced_system) is no Newton step and is not extended: max_s = 1.
+   subroutine enhanced_line_search(name, material, problem, direction, max_s, state_old, state_new, alpha, &
                                    point, error)
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
       type(local_problem_t), intent(in) :: problem
       real(dp), intent(in) :: direction(:)
+      real(dp), intent(in) :: max_s   !! the longest step tried
       real(dp), intent(in) :: state_old(:, :)
       real(dp), intent(inout) :: state_new(:, :)
       real(dp), intent(inout) :: alpha(:)
@@ -501,7 +513,7 @@ contains
       integer :: k, n
       logical :: failed
       n = problem%n
-      call search%start(dot_product(direction, point%residual(1:n)), norm2(point%residual(1:n)))
+      call search%start(dot_product(direction, point%residual(1:n)), norm2(point%residual(1:n)), max_s)
       do k = 1, max_line_search_trials
          call try_step(name, material, problem, alpha(1:n) + search%s*direction, state_old, state_new, &
                        trial, failed)
@@ -540,10 +552,11 @@ contains
    end subroutine try_step
 
    !> Start a line search (see enhanced_line_search): first trial s = 1.
-   pure subroutine line_search_start(self, slope0, norm0)
+   pure subroutine line_search_start(self, slope0, norm0, max_s)
       class(line_search_t), intent(inout) :: self
       real(dp), intent(in) :: slope0   !! phi(0) = d . h(alpha)
       real(dp), intent(in) :: norm0    !! |h(alpha)|
+      real(dp), intent(in) :: max_s    !! the longest step tried
       self%slope0 = slope0
       self%norm0 = norm0
       self%energy = slope0 < 0.0_dp
@@ -554,6 +567,7 @@ contains
       self%side = 0
       self%s = 1.0_dp
       self%kept_s = 0.0_dp
+      self%max_s = max_s
    end subroutine line_search_start
 
    !> Judge the trial at s: true when it ends the search (then kept_s = s), else the next s.
@@ -566,7 +580,7 @@ contains
       if (.not. failed) self%kept_s = self%s
       if (self%energy) then
          done = .not. failed .and. (abs(slope) <= line_search_ratio*abs(self%slope0) .or. &
-                                    (slope < 0.0_dp .and. self%s >= max_step_length))
+                                    (slope < 0.0_dp .and. self%s >= self%max_s))
       else
          done = .not. failed .and. norm <= (1.0_dp - 0.5_dp*self%s)*self%norm0
       end if
@@ -602,7 +616,7 @@ contains
          self%side = -1
       end if
       if (.not. (self%high > self%low)) then
-         self%s = min(2.0_dp*self%s, max_step_length)
+         self%s = min(2.0_dp*self%s, self%max_s)
          return
       end if
       width = self%high - self%low
@@ -627,6 +641,32 @@ contains
                                                            weighted(:, 1:n))
       end do
    end subroutine enhanced_stiffness
+
+   !> Solve K_aa X = B (B <- X), K_aa = sum_g G^T C G dV from the points' moduli C
+   !> (solve_scaled). Where K_aa is singular (solve_scaled's pivot test) the system is solved
+   !> with K_aa + weight K_aa^el, K_aa^el = sum_g G^T D G dV from the law's elastic moduli D.
+   pure subroutine solve_enhanced_system(problem, moduli, weight, rhs, singular, regularised)
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(in) :: moduli(6, 6, 8)
+      real(dp), intent(in) :: weight
+      real(dp), intent(inout) :: rhs(:, :)
+      logical, intent(out) :: singular
+      logical, intent(out), optional :: regularised   !! K_aa + weight K_aa^el was solved
+      real(dp) :: stiffness(problem%n, problem%n), matrix(problem%n, problem%n), elastic(problem%n, problem%n)
+      real(dp) :: solved(size(rhs, 1), size(rhs, 2))
+      call enhanced_stiffness(problem, moduli, stiffness)
+      matrix = stiffness
+      solved = rhs
+      call solve_scaled(matrix, solved, singular)
+      if (present(regularised)) regularised = singular
+      if (.not. singular) then
+         rhs = solved
+         return
+      end if
+      call enhanced_stiffness(problem, spread(problem%elastic, 3, 8), elastic)
+      matrix = stiffness + weight*elastic
+      call solve_scaled(matrix, rhs, singular)
+   end subroutine solve_enhanced_system
 
    !> Solve K_aa X = B (B <- X) with K_aa scaled symmetrically by D = diag(|K_aa|)^{-1/2}:
    !> (D K_aa D) (D^{-1} X) = D B. The enhanced modes of a thin, long element differ in size by
@@ -744,13 +784,12 @@ contains
       real(dp), intent(inout) :: tangent(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: coupling(24, max_eas_modes), solved(max_eas_modes, 24)
-      real(dp) :: stiffness(max_eas_modes, max_eas_modes), weighted(6, max_eas_modes), b_nl(6, 3, 8)
+      real(dp) :: weighted(6, max_eas_modes), b_nl(6, 3, 8)
       integer :: g, a, n
       logical :: singular
       n = problem%n
       coupling(:, 1:n) = 0.0_dp
       solved(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
-      call enhanced_stiffness(problem, moduli, stiffness(1:n, 1:n))
       do g = 1, 8
          call nonlinear_b(deformation(:, :, g), dn_dx(:, :, g), b_nl)
          weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
@@ -763,7 +802,8 @@ contains
          end do
       end do
       if (symmetric) solved(1:n, :) = transpose(coupling(:, 1:n))
-      call solve_scaled(stiffness(1:n, 1:n), solved(1:n, :), singular)
+      call solve_enhanced_system(problem, moduli, merge(condensation_regularisation, local_regularisation, symmetric), &
+                                 solved(1:n, :), singular)
       if (singular) then
          call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
          return

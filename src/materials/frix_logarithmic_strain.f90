@@ -176,16 +176,18 @@ contains
       end if
    end function second_difference
 
-   !> Eigenvalues and orthonormal eigenvectors (columns) of a symmetric 3 x 3 matrix by cyclic
-   !> Jacobi rotations (Golub & Van Loan, Matrix Computations, 4th ed., 8.5): each rotation
-   !> zeroes one off-diagonal entry; sweeps until the off-diagonal part is below 1e-15 of the
-   !> matrix (quadratic convergence: 4-6 sweeps).
+   !> Eigenvalues and orthonormal eigenvectors (columns) of a symmetric 3 x 3 matrix by classical
+   !> Jacobi rotations (Golub & Van Loan, Matrix Computations, 4th ed., 8.5.2): each rotation
+   !> zeroes the largest off-diagonal entry, until the off-diagonal part is below 1e-15 of the
+   !> matrix (quadratic convergence). Rotating the largest entry first makes a nearly diagonal
+   !> or nearly 2 x 2 matrix (a strain with round-off shears) cost one full rotation and a few
+   !> by round-off angles, for which t = 1/(2 theta) and c = 1 are exact.
    pure subroutine symmetric_eigen3(matrix, eigenvalues, eigenvectors)
       real(dp), intent(in) :: matrix(3, 3)
       real(dp), intent(out) :: eigenvalues(3)
       real(dp), intent(out) :: eigenvectors(3, 3)
-      real(dp) :: a(3, 3), scale, theta, t, c, s, column_p(3), column_q(3)
-      integer :: sweep, p, q, pair
+      real(dp) :: a(3, 3), scale, theta, t, c, s, column_p(3), column_q(3), off(3)
+      integer :: rotation, p, q, pair
       integer, parameter :: pair_p(3) = [1, 1, 2], pair_q(3) = [2, 3, 3]
       a = 0.5_dp*(matrix + transpose(matrix))
       eigenvectors = 0.0_dp
@@ -193,33 +195,38 @@ contains
          eigenvectors(p, p) = 1.0_dp
       end do
       scale = sqrt(sum(a*a))
-      do sweep = 1, 50
-         if (sqrt(2.0_dp*(a(1, 2)**2 + a(1, 3)**2 + a(2, 3)**2)) <= 1.0e-15_dp*scale) exit
-         do pair = 1, 3
-            p = pair_p(pair)
-            q = pair_q(pair)
-            if (a(p, q) == 0.0_dp) cycle
-            ! t = tan(phi), the smaller root of t^2 + 2 theta t - 1 = 0; A <- R^T A R with the
-            ! rotation R = I + (c - 1)(e_p e_p + e_q e_q) + s (e_p e_q - e_q e_p)
+      do rotation = 1, 150
+         off = [a(1, 2), a(1, 3), a(2, 3)]
+         if (sqrt(2.0_dp*sum(off**2)) <= 1.0e-15_dp*scale) exit
+         pair = maxloc(abs(off), dim=1)
+         p = pair_p(pair)
+         q = pair_q(pair)
+         ! t = tan(phi), the smaller root of t^2 + 2 theta t - 1 = 0; A <- R^T A R with the
+         ! rotation R = I + (c - 1)(e_p e_p + e_q e_q) + s (e_p e_q - e_q e_p)
+         if (abs(a(p, q)) < 1.0e-8_dp*abs(a(q, q) - a(p, p))) then
+            ! |theta| > 5e7: t = 1/(2 theta) (relative error theta^-2 / 4) and c = 1 to round-off
+            t = a(p, q)/(a(q, q) - a(p, p))
+            c = 1.0_dp
+         else
             theta = (a(q, q) - a(p, p))/(2.0_dp*a(p, q))
             t = sign(1.0_dp, theta)/(abs(theta) + sqrt(theta*theta + 1.0_dp))
             c = 1.0_dp/sqrt(t*t + 1.0_dp)
-            s = t*c
-            column_p = a(:, p)
-            column_q = a(:, q)
-            a(:, p) = c*column_p - s*column_q
-            a(:, q) = s*column_p + c*column_q
-            column_p = a(p, :)
-            column_q = a(q, :)
-            a(p, :) = c*column_p - s*column_q
-            a(q, :) = s*column_p + c*column_q
-            a(p, q) = 0.0_dp
-            a(q, p) = 0.0_dp
-            column_p = eigenvectors(:, p)
-            column_q = eigenvectors(:, q)
-            eigenvectors(:, p) = c*column_p - s*column_q
-            eigenvectors(:, q) = s*column_p + c*column_q
-         end do
+         end if
+         s = t*c
+         column_p = a(:, p)
+         column_q = a(:, q)
+         a(:, p) = c*column_p - s*column_q
+         a(:, q) = s*column_p + c*column_q
+         column_p = a(p, :)
+         column_q = a(q, :)
+         a(p, :) = c*column_p - s*column_q
+         a(q, :) = s*column_p + c*column_q
+         a(p, q) = 0.0_dp
+         a(q, p) = 0.0_dp
+         column_p = eigenvectors(:, p)
+         column_q = eigenvectors(:, q)
+         eigenvectors(:, p) = c*column_p - s*column_q
+         eigenvectors(:, q) = s*column_p + c*column_q
       end do
       do p = 1, 3
          eigenvalues(p) = a(p, p)

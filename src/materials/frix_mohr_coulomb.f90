@@ -47,7 +47,7 @@ module frix_mohr_coulomb
    use frix_property_list, only: property_list_t
    use frix_material, only: material_t
    use frix_linear_elastic, only: hooke_tangent
-   use frix_symmetric_tensor, only: tensor_of_strain, stress_of_tensor, rotated_unit_strain
+   use frix_symmetric_tensor, only: voigt_i, voigt_j, tensor_of_strain, principal_dyads
    use frix_logarithmic_strain, only: symmetric_eigen3
    use frix_frictional_plasticity, only: frictional_plastic_t, return_outcome_t, read_frictional_properties, &
                                          region_elastic, region_surface, region_edge, region_apex, region_tension
@@ -69,9 +69,27 @@ module frix_mohr_coulomb
                                                                  4, 5, 0, 1, 2, 4, 1, 3, 4, 1, 3, 5, 1, 4, 5, &
                                                                  3, 4, 5, 4, 5, 6], [max_active, 12])
 
+   !> The planes' normals and the constants the returns need (new_planes, built with the law).
+   type :: planes_t
+      real(dp) :: normals(6, 3)     !! a_i (row i): of phi (1-3), the cut-off (4-6)
+      real(dp) :: flows(6, 3)       !! b_i (row i): of psi (1-3), the cut-off (4-6)
+      real(dp) :: elastic(3, 3)     !! D in principal space
+      real(dp) :: bulk, shear
+      real(dp) :: tension           !! t, or huge without a cut-off
+      real(dp) :: two_cos           !! 2 cos(phi)
+   end type planes_t
+
+   !> The cohesion of one return and what its tests compare with.
+   type :: bound_t
+      real(dp) :: cohesion          !! c at the start of the increment
+      real(dp) :: slope             !! dc/dalpha during the increment
+      real(dp) :: scale             !! of the stresses: 2 c cos(phi) + max |sigma*_a| (+ t)
+   end type bound_t
+
    type, extends(frictional_plastic_t) :: mohr_coulomb_t
       logical :: has_tension = .false.   !! TENSION given
       real(dp) :: tension = 0.0_dp       !! t, the cut-off of the principal stresses
+      type(planes_t) :: planes           !! of the law's constants (new_planes)
    contains
       procedure :: corrector => mohr_coulomb_corrector
    end type mohr_coulomb_t
@@ -85,15 +103,6 @@ module frix_mohr_coulomb
       logical :: tied(3, 3) = .false.        !! pairs the return holds equal
    end type principal_return_t
 
-   !> The planes' normals and what the returns need, for one law and increment.
-   type :: planes_t
-      real(dp) :: normals(6, 3)     !! a_i (row i): of phi (1-3), the cut-off (4-6)
-      real(dp) :: flows(6, 3)       !! b_i (row i): of psi (1-3), the cut-off (4-6)
-      real(dp) :: elastic(3, 3)     !! D in principal space
-      real(dp) :: bulk, shear, cohesion, slope, scale
-      real(dp) :: tension           !! t, or huge without a cut-off
-      real(dp) :: two_cos           !! 2 cos(phi)
-   end type planes_t
 
 contains
 
@@ -116,7 +125,9 @@ contains
                               bound//'), got '//to_string(law%tension))
          end if
       end if
-      if (.not. allocated(error)) allocate (material, source=law)
+      if (allocated(error)) return
+      law%planes = new_planes(law)
+      allocate (material, source=law)
    end subroutine mohr_coulomb_from_properties
 
    subroutine mohr_coulomb_corrector(self, elastic_strain, cohesion, slope, outcome, error)
@@ -125,25 +136,25 @@ contains
       real(dp), intent(in) :: cohesion, slope
       type(return_outcome_t), intent(out) :: outcome
       type(error_t), allocatable, intent(out) :: error
-      type(planes_t) :: planes
+      type(bound_t) :: bound
       type(principal_return_t) :: principal
-      real(dp) :: strains(3), directions(3, 3), trial(3)
+      real(dp) :: strains(3), directions(3, 3), trial(3), dyads(6, 6)
       call principal_strains(elastic_strain, strains, directions)
-      planes = new_planes(self, cohesion, slope)
-      trial = matmul(planes%elastic, strains)
-      planes%scale = 2.0_dp*cohesion*cos(self%friction_angle) + maxval(abs(trial))
-      if (self%has_tension) planes%scale = planes%scale + self%tension
-      if (maxval(excess(planes, trial, planes%cohesion)) <= yield_tolerance*planes%scale) then
+      trial = matmul(self%planes%elastic, strains)
+      bound = bound_t(cohesion, slope, self%planes%two_cos*cohesion + maxval(abs(trial)))
+      if (self%has_tension) bound%scale = bound%scale + self%tension
+      if (maxval(excess(self%planes, trial, cohesion)) <= yield_tolerance*bound%scale) then
          outcome%tangent = hooke_tangent(self%young, self%poisson)
          outcome%stress = matmul(outcome%tangent, elastic_strain)
          return
       end if
-      call principal_return(self, planes, trial, principal, error)
+      call principal_return(self, bound, trial, principal, error)
       if (allocated(error)) return
       outcome%region = principal%region
       outcome%alpha_increment = principal%alpha_increment
-      outcome%stress = spectral_stress(principal%stress, directions)
-      outcome%tangent = spectral_tangent(principal, strains, directions)
+      dyads = principal_dyads(directions)
+      outcome%stress = spectral_stress(principal%stress, dyads)
+      outcome%tangent = spectral_tangent(principal, strains, dyads)
    end subroutine mohr_coulomb_corrector
 
    !> Principal values of the strain (descending) and their directions (columns).
@@ -162,9 +173,9 @@ contains
       directions = vectors(:, order)
    end subroutine principal_strains
 
-   pure function new_planes(self, cohesion, slope) result(planes)
+   !> The planes of the law's constants.
+   pure function new_planes(self) result(planes)
       class(mohr_coulomb_t), intent(in) :: self
-      real(dp), intent(in) :: cohesion, slope
       type(planes_t) :: planes
       real(dp) :: lambda
       integer :: a
@@ -184,9 +195,6 @@ contains
       do a = 1, 3
          planes%elastic(a, a) = lambda + 2.0_dp*planes%shear
       end do
-      planes%cohesion = cohesion
-      planes%slope = slope
-      planes%scale = 0.0_dp
    end function new_planes
 
    !> Rows a_1, a_2, a_3 of f_1, f_2, f_3 (module header) for s = sin(phi) (or sin(psi): b_i).
@@ -199,9 +207,9 @@ contains
    end function plane_vectors
 
    !> The sets of active planes in turn (module header), then the apex.
-   subroutine principal_return(self, planes, trial, principal, error)
+   subroutine principal_return(self, bound, trial, principal, error)
       class(mohr_coulomb_t), intent(in) :: self
-      type(planes_t), intent(in) :: planes
+      type(bound_t), intent(in) :: bound
       real(dp), intent(in) :: trial(3)
       type(principal_return_t), intent(out) :: principal
       type(error_t), allocatable, intent(out) :: error
@@ -209,52 +217,66 @@ contains
       integer :: k
       if (self%has_tension) then
          do k = 1, size(cut_off_sets, 2)
-            call planes_return(self, planes, trial, pack(cut_off_sets(:, k), cut_off_sets(:, k) > 0), principal, valid)
+            call planes_return(self%planes, bound, trial, cut_off_sets(:, k), principal, valid)
             if (valid) return
          end do
       else
          do k = 1, size(plain_sets, 2)
-            call planes_return(self, planes, trial, pack(plain_sets(:, k), plain_sets(:, k) > 0), principal, valid)
+            call planes_return(self%planes, bound, trial, plain_sets(:, k), principal, valid)
             if (valid) return
          end do
       end if
-      call apex_return(self, planes, trial, principal, error)
+      call apex_return(self, bound, trial, principal, error)
    end subroutine principal_return
 
-   !> The closed-form return onto the planes `active` (module header); `valid` as there.
-   pure subroutine planes_return(self, planes, trial, active, principal, valid)
-      class(mohr_coulomb_t), intent(in) :: self
+   !> The closed-form return onto the planes of `active` (module header); `valid` as there.
+   !> Fixed sizes: the unused rows and columns of the set's arrays are zero (an identity block
+   !> of the Jacobian), which leaves the active planes' sums as they are.
+   pure subroutine planes_return(planes, bound, trial, active, principal, valid)
       type(planes_t), intent(in) :: planes
+      type(bound_t), intent(in) :: bound
       real(dp), intent(in) :: trial(3)
-      integer, intent(in) :: active(:)
+      integer, intent(in) :: active(max_active)   !! the active planes, then zeros
       type(principal_return_t), intent(out) :: principal
       logical, intent(out) :: valid
-      real(dp) :: normals(size(active), 3), flows(3, size(active)), jacobian(size(active), size(active))
-      real(dp) :: inverse(size(active), size(active)), multipliers(size(active)), hardening(size(active))
-      real(dp) :: trial_excess(6)
+      real(dp) :: normals(max_active, 3), flows(3, max_active), jacobian(max_active, max_active)
+      real(dp) :: inverse(max_active, max_active), multipliers(max_active), hardening(max_active)
+      real(dp) :: trial_excess(6), active_excess(max_active)
       logical :: invertible
-      integer :: k
-      normals = planes%normals(active, :)
-      flows = matmul(planes%elastic, transpose(planes%flows(active, :)))   ! columns D b_i
-      hardening = merge(planes%two_cos, 0.0_dp, active <= 3)   ! d(2 c cos(phi)) / d(c) of each plane's bound
-      jacobian = matmul(normals, flows) + planes%slope*spread(hardening, 2, size(active))*spread(hardening, 1, size(active))
-      call small_inverse(jacobian, inverse, invertible)
+      integer :: n, i, k
+      n = count(active > 0)
+      trial_excess = excess(planes, trial, bound%cohesion)
+      normals = 0.0_dp
+      flows = 0.0_dp
+      hardening = 0.0_dp   ! d(2 c cos(phi)) / d(c) of each plane's bound
+      active_excess = 0.0_dp
+      do i = 1, n
+         normals(i, :) = planes%normals(active(i), :)
+         flows(:, i) = matmul(planes%elastic, planes%flows(active(i), :))   ! D b_i
+         if (active(i) <= 3) hardening(i) = planes%two_cos
+         active_excess(i) = trial_excess(active(i))
+      end do
+      jacobian = matmul(normals, flows)
+      do i = 1, max_active
+         jacobian(:, i) = jacobian(:, i) + bound%slope*hardening*hardening(i)
+         if (i > n) jacobian(i, i) = 1.0_dp
+      end do
+      call small_inverse(jacobian, n, inverse, invertible)
       valid = .false.
       if (.not. invertible) return
-      trial_excess = excess(planes, trial, planes%cohesion)
-      multipliers = matmul(inverse, trial_excess(active))
+      multipliers = matmul(inverse, active_excess)
       principal%stress = trial - matmul(flows, multipliers)
       principal%alpha_increment = dot_product(hardening, multipliers)
       valid = all(multipliers >= -region_tolerance*maxval(abs(multipliers))) .and. &
-              all(excess(planes, principal%stress, planes%cohesion + planes%slope*principal%alpha_increment) &
-                  <= region_tolerance*planes%scale)
+              all(excess(planes, principal%stress, bound%cohesion + bound%slope*principal%alpha_increment) &
+                  <= region_tolerance*bound%scale)
       principal%derivative = planes%elastic - matmul(flows, matmul(inverse, matmul(normals, planes%elastic)))
       do k = 4, 6   ! on an active cut-off sigma_a = t exactly (free of the round-off above)
          if (.not. any(active == k)) cycle
          principal%stress(k - 3) = planes%tension
          principal%derivative(k - 3, :) = 0.0_dp
       end do
-      principal%region = region_of(active)
+      principal%region = region_of(active, n)
       principal%tied(1, 2) = any(active == 3) .or. (any(active == 4) .and. any(active == 5))
       principal%tied(2, 3) = any(active == 2) .or. (any(active == 5) .and. any(active == 6))
       principal%tied(1, 3) = principal%tied(1, 2) .and. principal%tied(2, 3)
@@ -271,12 +293,12 @@ contains
       values(4:6) = values(4:6) - planes%tension
    end function excess
 
-   !> REGION of a set of active planes.
-   pure integer function region_of(active)
-      integer, intent(in) :: active(:)
+   !> REGION of a set of n active planes.
+   pure integer function region_of(active, n)
+      integer, intent(in) :: active(max_active), n
       if (any(active > 3)) then
          region_of = region_tension
-      else if (size(active) == 1) then
+      else if (n == 1) then
          region_of = region_surface
       else
          region_of = region_edge
@@ -284,9 +306,9 @@ contains
    end function region_of
 
    !> sigma = p 1 with p = c(alpha) cot(phi) (module header); needs phi > 0 and psi > 0.
-   subroutine apex_return(self, planes, trial, principal, error)
+   subroutine apex_return(self, bound, trial, principal, error)
       class(mohr_coulomb_t), intent(in) :: self
-      type(planes_t), intent(in) :: planes
+      type(bound_t), intent(in) :: bound
       real(dp), intent(in) :: trial(3)
       type(principal_return_t), intent(out) :: principal
       type(error_t), allocatable, intent(out) :: error
@@ -298,36 +320,32 @@ contains
          call fatal_error(error, self%name//': a stress beyond the apex of the cone needs PSI > 0'//trial_text)
          return
       end if
-      modulus = planes%slope*cos(self%friction_angle)**2/(sin(self%friction_angle)*sin(self%dilation_angle))
+      modulus = bound%slope*cos(self%friction_angle)**2/(sin(self%friction_angle)*sin(self%dilation_angle))
       pressure = sum(trial)/3.0_dp
-      volumetric = (pressure - planes%cohesion/tan(self%friction_angle))/(planes%bulk + modulus)
-      if (.not. (volumetric >= 0.0_dp .and. planes%bulk + modulus > 0.0_dp)) then
+      volumetric = (pressure - bound%cohesion/tan(self%friction_angle))/(self%planes%bulk + modulus)
+      if (.not. (volumetric >= 0.0_dp .and. self%planes%bulk + modulus > 0.0_dp)) then
          call fatal_error(error, self%name//': no return onto the yield surface'//trial_text)
          return
       end if
       principal%alpha_increment = volumetric*cos(self%friction_angle)/sin(self%dilation_angle)
       ! p* - K d eps_v, written as c(alpha) cot(phi): exactly constant for perfect plasticity
-      principal%stress = (planes%cohesion + planes%slope*principal%alpha_increment)/tan(self%friction_angle)
-      principal%derivative = planes%bulk*modulus/(planes%bulk + modulus)
+      principal%stress = (bound%cohesion + bound%slope*principal%alpha_increment)/tan(self%friction_angle)
+      principal%derivative = self%planes%bulk*modulus/(self%planes%bulk + modulus)
       principal%region = region_apex
       principal%tied = .true.
    end subroutine apex_return
 
-   !> Inverse of a 1 x 1, 2 x 2 or 3 x 3 matrix by its adjugate; `invertible` false where the
+   !> Inverse of the leading n x n block (n = 1, 2, 3) of a 3 x 3 matrix whose other rows and
+   !> columns are those of the identity, by the adjugate; `invertible` false where the
    !> determinant is not above 1e-12 of the product of the rows' norms (a dependent set of
    !> planes) or, for a single plane, not positive (softening too steep for a return).
-   pure subroutine small_inverse(matrix, inverse, invertible)
-      real(dp), intent(in) :: matrix(:, :)
-      real(dp), intent(out) :: inverse(size(matrix, 1), size(matrix, 2))
+   pure subroutine small_inverse(a, n, inverse, invertible)
+      real(dp), intent(in) :: a(3, 3)
+      integer, intent(in) :: n
+      real(dp), intent(out) :: inverse(3, 3)
       logical, intent(out) :: invertible
-      real(dp) :: determinant, a(3, 3), adjugate(3, 3)
-      integer :: n, i, j
-      n = size(matrix, 1)
-      a = 0.0_dp
-      do i = n + 1, 3
-         a(i, i) = 1.0_dp
-      end do
-      a(1:n, 1:n) = matrix
+      real(dp) :: determinant, adjugate(3, 3)
+      integer :: i, j
       do j = 1, 3
          do i = 1, 3
             adjugate(j, i) = a(mod(i, 3) + 1, mod(j, 3) + 1)*a(mod(i + 1, 3) + 1, mod(j + 1, 3) + 1) &
@@ -335,53 +353,56 @@ contains
          end do
       end do
       determinant = sum(a(1, :)*adjugate(:, 1))
-      invertible = abs(determinant) > 1.0e-12_dp*product(norm2(a, dim=2)) .and. (n > 1 .or. determinant > 0.0_dp)
+      invertible = abs(determinant) > 1.0e-12_dp*product(sqrt(sum(a**2, dim=2))) .and. (n > 1 .or. determinant > 0.0_dp)
       inverse = 0.0_dp
-      if (invertible) inverse = adjugate(1:n, 1:n)/determinant
+      if (invertible) inverse = adjugate/determinant
    end subroutine small_inverse
 
-   !> d sigma / d eps (Voigt, engineering strains) of the isotropic function (module header):
-   !> column j is the stress increment of the unit strain increment j, built in the principal
-   !> basis and rotated back.
-   pure function spectral_tangent(principal, strains, directions) result(tangent)
+   !> d sigma / d eps (Voigt, engineering strains) of the isotropic function (module header),
+   !> with the dyads D_m of the principal directions (principal_dyads):
+   !>   sum_ab C_ab D_a D_b^T + sum_(a<b) (R_ab + R_ba) D_ab D_ab^T,
+   !> C = principal%derivative, R_ab the rotation term of the pair (a, b) (R_ba: C_bb - C_ba in
+   !> the confluent limit); D_ab^T d eps is d eps_ab in the principal basis.
+   pure function spectral_tangent(principal, strains, dyads) result(tangent)
       type(principal_return_t), intent(in) :: principal
-      real(dp), intent(in) :: strains(3), directions(3, 3)
+      real(dp), intent(in) :: strains(3), dyads(6, 6)
       real(dp) :: tangent(6, 6)
-      real(dp) :: rotation(3, 3), increment(3, 3), response(3, 3)
-      integer :: a, b, j
+      real(dp) :: normal(6), shear
+      integer :: a, b, m, l
+      tangent = 0.0_dp
       do b = 1, 3
-         do a = 1, 3
-            if (a == b .or. principal%tied(a, b)) then
-               rotation(a, b) = 0.0_dp
-            else if (strains(a) /= strains(b)) then
-               rotation(a, b) = (principal%stress(a) - principal%stress(b))/(strains(a) - strains(b))
-            else
-               rotation(a, b) = principal%derivative(a, a) - principal%derivative(a, b)
-            end if
+         normal = matmul(dyads(:, 1:3), principal%derivative(:, b))
+         do l = 1, 6
+            tangent(:, l) = tangent(:, l) + normal*dyads(l, b)
          end do
       end do
-      do j = 1, 6
-         increment = rotated_unit_strain(directions, j)
-         response = rotation*increment
-         do a = 1, 3
-            response(a, a) = sum(principal%derivative(a, :)*[(increment(b, b), b=1, 3)])
+      do m = 4, 6
+         a = voigt_i(m)
+         b = voigt_j(m)
+         if (principal%tied(a, b)) cycle
+         shear = rotation(a, b) + rotation(b, a)
+         do l = 1, 6
+            tangent(:, l) = tangent(:, l) + shear*dyads(l, m)*dyads(:, m)
          end do
-         tangent(:, j) = stress_of_tensor(matmul(directions, matmul(response, transpose(directions))))
       end do
+   contains
+      !> (sigma_a - sigma_b) / (eps_a - eps_b), or C_aa - C_ab where the trial values coincide.
+      pure real(dp) function rotation(a, b)
+         integer, intent(in) :: a, b
+         if (strains(a) /= strains(b)) then
+            rotation = (principal%stress(a) - principal%stress(b))/(strains(a) - strains(b))
+         else
+            rotation = principal%derivative(a, a) - principal%derivative(a, b)
+         end if
+      end function rotation
    end function spectral_tangent
 
    !> sum_a sigma_a n_a x n_a written as sigma_2 1 + (sigma_1 - sigma_2) n_1 x n_1 + (sigma_3 -
    !> sigma_2) n_3 x n_3: exactly isotropic at the apex, one direction only on an edge.
-   pure function spectral_stress(values, directions) result(stress)
-      real(dp), intent(in) :: values(3), directions(3, 3)
+   pure function spectral_stress(values, dyads) result(stress)
+      real(dp), intent(in) :: values(3), dyads(6, 6)
       real(dp) :: stress(6)
-      real(dp) :: tensor(3, 3)
-      integer :: i
-      tensor = (values(1) - values(2))*spread(directions(:, 1), 2, 3)*spread(directions(:, 1), 1, 3) &
-               + (values(3) - values(2))*spread(directions(:, 3), 2, 3)*spread(directions(:, 3), 1, 3)
-      do i = 1, 3
-         tensor(i, i) = tensor(i, i) + values(2)
-      end do
-      stress = stress_of_tensor(tensor)
+      stress = (values(1) - values(2))*dyads(:, 1) + (values(3) - values(2))*dyads(:, 3)
+      stress(1:3) = stress(1:3) + values(2)
    end function spectral_stress
 end module frix_mohr_coulomb

@@ -7,7 +7,7 @@ module frix_symmetric_tensor
    private
 
    public :: voigt_i, voigt_j, tensor_of_strain, tensor_of_stress, strain_of_tensor, stress_of_tensor
-   public :: right_cauchy_green, rotated_unit_strain
+   public :: right_cauchy_green, rotated_unit_strain, principal_dyads
 
    !> Voigt index pairs (i, j) of the components xx yy zz xy xz yz.
    integer, parameter :: voigt_i(6) = [1, 2, 3, 1, 1, 2]
@@ -72,6 +72,24 @@ contains
          end do
       end do
    end function rotated_unit_strain
+
+   !> The symmetric dyads of the columns n_1, n_2, n_3 of q in Voigt form (tensor shears): column
+   !> m, (a, b) = (voigt_i(m), voigt_j(m)), is (n_a x n_b + n_b x n_a) / 2. Entry (k, m) is also
+   !> entry (a, b) of Q^T H_k Q (rotated_unit_strain): with Q the principal directions, a
+   !> symmetric tensor is sum_m T^_m column m (T^_m its principal-basis component (a, b), both
+   !> orders for a /= b summed), and the principal component (a, b) of a unit engineering
+   !> strain k is entry (k, m).
+   pure function principal_dyads(q) result(dyads)
+      real(dp), intent(in) :: q(3, 3)
+      real(dp) :: dyads(6, 6)
+      integer :: k, m
+      do m = 1, 6
+         do k = 1, 6
+            dyads(k, m) = 0.5_dp*(q(voigt_i(k), voigt_i(m))*q(voigt_j(k), voigt_j(m)) &
+                                  + q(voigt_j(k), voigt_i(m))*q(voigt_i(k), voigt_j(m)))
+         end do
+      end do
+   end function principal_dyads
 
    !> C = I + 2 E of a Green-Lagrange strain in Voigt form (engineering shears: C_ij = gamma_ij).
    pure function right_cauchy_green(green) result(c)

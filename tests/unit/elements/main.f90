@@ -8,6 +8,7 @@ program test_elements
    use test_tet4, only: collect_tet4
    use test_tet10, only: collect_tet10
    use test_element_initial_stress, only: collect_element_initial_stress
+   use test_hex8_degenerate, only: collect_hex8_degenerate
    implicit none
    call run_suites([new_testsuite('hex8', collect_hex8), &
                     new_testsuite('hex8_thin', collect_hex8_thin), &
@@ -15,5 +16,6 @@ program test_elements
                     new_testsuite('surface_load', collect_surface_load), &
                     new_testsuite('tet4', collect_tet4), &
                     new_testsuite('tet10', collect_tet10), &
-                    new_testsuite('initial_stress', collect_element_initial_stress)])
+                    new_testsuite('initial_stress', collect_element_initial_stress), &
+                    new_testsuite('hex8_degenerate', collect_hex8_degenerate)])
 end program test_elements
