@@ -32,13 +32,13 @@ module frix_contact_assembly
                                    surface_is_curved, all_faces_angle
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_pass, only: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, &
-                                start_pass_state, kernel_nodes
+                                start_pass_state, kernel_nodes, slip_reversed
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
    use frix_tie_pass, only: setup_tie
    use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass, commit_mortar_pass, restart_mortar_pass
    use frix_tie_constraints, only: check_tie_nodes
    use frix_strings, only: to_string
-   use frix_friction_law, only: branch_free, branch_stick
+   use frix_friction_law, only: branch_free
    implicit none
    private
 
@@ -517,37 +517,6 @@ contains
       pressure = dot_product(force, normal)/pass%area(i)
       traction = (force - dot_product(force, normal)*normal)/pass%area(i)
    end subroutine interface_traction
-
-   !> Slip reversal (called at each Newton iterate, after slave i's evaluation): a node that
-   !> slipped at the previous iterate and now slips the opposite way (t . t_previous < 0) has
-   !> its solution in between, in the stick zone of width 2 mu p_N / eps_T around its anchor.
-   !> The slip branch cannot find it: its traction +-mu p_N jumps across the zone and its
-   !> tangent has no stiffness along the slip (Newton alternates between the two sides, as
-   !> for a relay). The node is then held in stick (linear in g_T: one Newton step lands in
-   !> the zone) until a converged iterate where the law chooses slip releases it
-   !> (release_inconsistent_branches). Returns .true. when the node has just been put in
-   !> stick and must be evaluated again.
-   logical function slip_reversed(pass, i) result(reversed)
-      type(contact_pass_t), intent(inout) :: pass
-      integer, intent(in) :: i
-      real(dp) :: magnitude, direction(3)
-      reversed = .false.
-      magnitude = norm2(pass%result(i)%traction)
-      if (pass%result(i)%status /= contact_slip .or. .not. magnitude > 0.0_dp) then
-         pass%slipped(i) = .false.
-         return
-      end if
-      direction = pass%result(i)%traction/magnitude
-      if (pass%slipped(i) .and. pass%branch(i) == branch_free .and. .not. pass%released(i)) then
-         reversed = dot_product(direction, pass%slip_direction(:, i)) < 0.0_dp
-      end if
-      pass%slipped(i) = .true.
-      pass%slip_direction(:, i) = direction
-      if (reversed) then
-         pass%branch(i) = branch_stick
-         pass%slipped(i) = .false.
-      end if
-   end function slip_reversed
 
    !> Accept the current contact state as converged: anchors (mortar passes: rows at the
    !> converged displacements u and tractions), accumulated slip, multipliers, and the

@@ -6,16 +6,16 @@ module frix_contact_pass
    use frix_kinds, only: dp
    use frix_mesh, only: mesh_t, surface_t
    use frix_surface_load, only: face_area_weights
-   use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes
+   use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes, contact_slip
    use frix_contact_patches, only: surface_patches_t, surface_faces, free_edges
-   use frix_friction_law, only: branch_free
+   use frix_friction_law, only: branch_free, branch_stick
    use frix_tie_mortar, only: tie_coupling_t
    use frix_mortar_contact, only: mortar_rows_t
    implicit none
    private
 
    public :: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, start_pass_state
-   public :: kernel_nodes
+   public :: kernel_nodes, slip_reversed
 
    !> most nodes of one kernel call: slave, face, anchor face, smoothed-normal ring
    integer, parameter :: max_kernel_nodes = 9 + max_ring_nodes
@@ -197,4 +197,35 @@ contains
          end associate
       end if
    end subroutine kernel_nodes
+
+   !> Slip reversal (called at each Newton iterate, after slave i's evaluation): a node that
+   !> slipped at the previous iterate and now slips the opposite way (t . t_previous < 0) has
+   !> its solution in between, in the stick zone of width 2 mu p_N / eps_T around its anchor.
+   !> The slip branch cannot find it: its traction +-mu p_N jumps across the zone and its
+   !> tangent has no stiffness along the slip (Newton alternates between the two sides, as
+   !> for a relay). The node is then held in stick (linear in g_T: one Newton step lands in
+   !> the zone) until a converged iterate where the law chooses slip releases it
+   !> (release_inconsistent_branches). Returns .true. when the node has just been put in
+   !> stick and must be evaluated again.
+   logical function slip_reversed(pass, i) result(reversed)
+      type(contact_pass_t), intent(inout) :: pass
+      integer, intent(in) :: i
+      real(dp) :: magnitude, direction(3)
+      reversed = .false.
+      magnitude = norm2(pass%result(i)%traction)
+      if (pass%result(i)%status /= contact_slip .or. .not. magnitude > 0.0_dp) then
+         pass%slipped(i) = .false.
+         return
+      end if
+      direction = pass%result(i)%traction/magnitude
+      if (pass%slipped(i) .and. pass%branch(i) == branch_free .and. .not. pass%released(i)) then
+         reversed = dot_product(direction, pass%slip_direction(:, i)) < 0.0_dp
+      end if
+      pass%slipped(i) = .true.
+      pass%slip_direction(:, i) = direction
+      if (reversed) then
+         pass%branch(i) = branch_stick
+         pass%slipped(i) = .false.
+      end if
+   end function slip_reversed
 end module frix_contact_pass

@@ -35,7 +35,8 @@
 !> anchor. What is left out is of relative order |g| / h, (slip increment) / h and h / R (h
 !> the face size, R the surfaces' radius of curvature). The normal law's and the friction
 !> law's derivatives are exact (dual numbers). Frictionless: K = -(dp_N/dg) / D_j
-!> (c n_j)(c n_j)^T, symmetric.
+!> (c n_j)(c n_j)^T, symmetric. On curved surfaces frix_mortar_assembly replaces this tangent by
+!> the complete one (central differences of the node's force, its row recomputed).
 module frix_mortar_contact
    use frix_kinds, only: dp
    use frix_face_projection, only: face_normal, face_node_xi, face_node_eta
@@ -188,7 +189,7 @@ contains
    !> there, or not covered at the set-up) or not covered then (mortar_covered) starts from the
    !> current row: no slip increment, so that its motion before it touches is not taken as slip
    !> (as a node-to-segment node that closes starts from its closest point).
-   subroutine mortar_node(rows, j, area, node, committed, committed_traction, committed_closed)
+   subroutine mortar_node(rows, j, area, node, committed, committed_traction, committed_closed, committed_row)
       type(mortar_rows_t), intent(in) :: rows
       integer, intent(in) :: j
       real(dp), intent(in) :: area
@@ -196,9 +197,11 @@ contains
       type(mortar_rows_t), intent(in), optional :: committed
       real(dp), intent(in), optional :: committed_traction(3)
       logical, intent(in), optional :: committed_closed   !! with `committed`
+      !> the node's row in `committed` (default j; rows of a part of the slave surface)
+      integer, intent(in), optional :: committed_row
       integer, allocatable :: nodes(:)
       real(dp), allocatable :: weight(:), committed_weight(:)
-      integer :: k, n, position
+      integer :: k, n, position, jc
       node%nodes = rows%nodes(rows%start(j) + 1:rows%start(j + 1))
       node%weight = rows%weight(rows%start(j) + 1:rows%start(j + 1))
       node%committed_weight = node%weight
@@ -208,16 +211,18 @@ contains
       node%normal = rows%normal(:, j)
       if (.not. present(committed)) return
       node%committed_traction = committed_traction
-      if (.not. (committed_closed .and. mortar_covered(committed, j))) return
+      jc = j
+      if (present(committed_row)) jc = committed_row
+      if (.not. (committed_closed .and. mortar_covered(committed, jc))) return
       node%fresh = .false.
       ! the union of the two rows, current row first (joined once, not grown per entry)
       n = size(node%nodes)
-      allocate (nodes(n + committed%start(j + 1) - committed%start(j)))
+      allocate (nodes(n + committed%start(jc + 1) - committed%start(jc)))
       allocate (weight(size(nodes)), committed_weight(size(nodes)))
       nodes(:n) = node%nodes
       weight(:n) = node%weight
       committed_weight = 0.0_dp
-      do k = committed%start(j) + 1, committed%start(j + 1)
+      do k = committed%start(jc) + 1, committed%start(jc + 1)
          position = findloc(nodes(:n), committed%nodes(k), dim=1)
          if (position == 0) then
             n = n + 1

@@ -120,7 +120,7 @@ contains
       real(dp), intent(out) :: master_part(4, 4), slave_part(4, 4)
       logical, intent(out) :: overlap
       real(dp) :: centre(3), normal(3), e1(3), e2(3), slave_2d(2, max_vertices), master_2d(2, 4)
-      real(dp) :: polygon(2, max_vertices), c(4, 4)
+      real(dp) :: polygon(2, max_vertices), c(4, 4), heights(4)
       integer :: n_vertices, a, t
       master_part = 0.0_dp
       slave_part = 0.0_dp
@@ -128,7 +128,10 @@ contains
       centre = 0.25_dp*sum(x_slave, dim=2)
       normal = face_normal(x_slave, [0.0_dp, 0.0_dp])
       if (dot_product(face_normal(x_master, [0.0_dp, 0.0_dp]), normal) >= 0.0_dp) return
-      if (abs(dot_product(0.25_dp*sum(x_master, dim=2) - centre, normal)) > distance) return
+      do a = 1, 4
+         heights(a) = dot_product(x_master(:, a) - centre, normal)
+      end do
+      if (minval(heights) > distance .or. maxval(heights) < -distance) return
       ! a zero-area slave face has a zero normal and was left above (the dot product is 0)
       if (.not. in_plane_axis(x_slave, normal, e1)) return
       e2 = cross_product(normal, e1)

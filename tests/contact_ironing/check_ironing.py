@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Check an ironing run (docs/verification/ironing.md) against reference force histories.
 
-usage: check_ironing.py OUT BASE REFERENCE [--sliding T0 T1 MU]
+usage: check_ironing.py OUT BASE REFERENCE [--sliding T0 T1 MU] [--end T]
 OUT/BASE_history.csv: the run's history (half model; inputs/ironing/ironing_forces.py doubles
 it to the whole die). REFERENCE: lines `t Fx Fz tol_x tol_z` (whole die; `#` comments give
 their source): at each t the run's Fx and Fz (interpolated between increments) must lie within
 tol of the reference. --sliding T0 T1 MU: over t in [T0, T1] (die sliding) every increment has
 Fx / Fz >= MU (Coulomb friction on the die's front, which also carries the pile-up ahead of
-it, resists the drag with at least mu times the pressing force) and Fx / Fz <= 2 MU."""
+it, resists the drag with at least mu times the pressing force) and Fx / Fz <= 2 MU. --end T: the
+run must reach t = T (default 2, the end of the sliding)."""
 import os
 import sys
 
@@ -23,8 +24,9 @@ def main():
     out, base, reference = args[:3]
     rows = frix_history(os.path.join(out, base + "_history.csv"))
     failures = []
-    if rows[-1][0] < 2.0 - 1e-9:
-        failures.append("the run ended at t = %g, not 2" % rows[-1][0])
+    end = float(args[args.index("--end") + 1]) if "--end" in args else 2.0
+    if rows[-1][0] < end - 1e-9:
+        failures.append("the run ended at t = %g, not %g" % (rows[-1][0], end))
     for line in open(reference):
         line = line.split("#")[0].split()
         if not line:
