@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # Extra checks beyond scripts/test.sh.
+#   scripts/check.sh long [extra ctest arguments]
+#       Builds frix (Release, in build, as scripts/test.sh) and runs the tests labelled `long`
+#       (15-60 s each in Release, left out of the default set to keep it under 5 minutes:
+#       the S3 path-following and friction-continuation runs, the necking bar to its peak, the
+#       strip footing against Prandtl, S4b at finite strain), two at a time. Prints the wall
+#       time.
 #   scripts/check.sh sanitize [extra ctest arguments]
 #       Installs what is missing and builds frix and its tests in build-sanitize with the
 #       CMake build type Sanitize (scripts/setup.sh build-sanitize Sanitize): AddressSanitizer
 #       with LeakSanitizer, UBSan, gfortran's -fcheck=all and floating-point traps (invalid,
 #       division by zero, overflow). Then runs the default test set there (every ctest except
 #       those labelled `slow`, two at a time), less the tests labelled `long` (over 5 minutes
-#       each in this build; they run in the Release default set; here: ctest -L long in
+#       each in this build; scripts/check.sh long runs them in Release; here: ctest -L long in
 #       build-sanitize). Any sanitizer report (heap/stack overflow,
 #       use after free, a leak at exit, undefined behaviour) aborts the program (SIGABRT), which
 #       fails its test; so does a floating-point trap (SIGFPE) or a runtime check. Prints the
@@ -19,12 +25,23 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
-usage() { echo "usage: $0 sanitize|petsc [extra ctest arguments]" >&2; exit 2; }
+usage() { echo "usage: $0 long|sanitize|petsc [extra ctest arguments]" >&2; exit 2; }
 [ $# -ge 1 ] || usage
 mode=$1
 shift
 
 case "$mode" in
+  long)
+    start=$(date +%s)
+    build_dir=$root/build
+    "$root/scripts/setup.sh" "$build_dir"
+    built=$(date +%s)
+    status=0
+    (cd "$build_dir" && ctest --output-on-failure -L long -LE slow -j2 "$@") || status=$?
+    end=$(date +%s)
+    echo "check.sh long: build $((built - start)) s, tests $((end - built)) s, wall time $((end - start)) s"
+    exit $status
+    ;;
   sanitize)
     start=$(date +%s)
     build_dir=$root/build-sanitize
