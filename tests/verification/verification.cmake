@@ -1,7 +1,7 @@
 # Verification problems V1-V4, S6(a) and the necking bar (docs/verification.md,
 # docs/verification/*.md), included from tests/cases.cmake. Needs ${FRIX_BIN}. Every test has
 # the label `regression`, the plastic ones also `plasticity`; V1-V3 run in about 20 s on 2
-# cores, V4 and S6(a) add about 30 s, the necking bar about 40 s of CPU in the default run and
+# cores, V4 and S6(a) add about 30 s, the necking bar about 40-50 s of CPU (label `long`: scripts/check.sh long) and
 # one test labelled `slow` (2.5 to 5 minutes); the 32 x 32 Cook meshes are documented in
 # docs/verification.md but not run as tests.
 set(VERIFICATION_DIR ${CMAKE_CURRENT_SOURCE_DIR}/verification)
