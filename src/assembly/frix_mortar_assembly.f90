@@ -21,6 +21,8 @@ module frix_mortar_assembly
                                   mortar_covered
    use frix_mortar_segments, only: segment_integrals
    use frix_face_projection, only: face_normal
+   use frix_contact_patches, only: faces_around_nodes
+   use frix_mesh_selection, only: sorted_unique
    implicit none
    private
 
@@ -68,10 +70,12 @@ contains
       type(mortar_patch_t) :: patch
       type(mortar_node_t) :: node
       real(dp), allocatable :: x(:, :)
+      integer, allocatable :: face_start(:), node_faces(:)
       integer :: i, a, b
       x = current_coordinates(model, u)
       call mortar_rows(x, pass%slave_nodes, pass%slave_faces, pass%faces, pass%band, pass%mortar_rows)
       pass%face = pass%mortar_rows%master_face
+      call faces_around_nodes(size(x, 2), pass%faces, face_start, node_faces)
       allocate (missing(2, 64))
       n_missing = 0
       do i = 1, size(pass%slave_nodes)
@@ -79,7 +83,7 @@ contains
          ! written, as for a node-to-segment node without a face)
          if (.not. mortar_covered(pass%mortar_rows, i)) pass%face(i) = 0
          if (pass%face(i) == 0) cycle
-         call node_patch(pass, frictional, x, i, patch)
+         call node_patch(pass, frictional, x, face_start, node_faces, i, patch)
          if (.not. patch%curved) then
             call slave_node(pass, frictional, i, node)
             patch%block = node%nodes
@@ -110,6 +114,7 @@ contains
       type(mortar_node_t) :: node
       type(mortar_patch_t) :: patch
       real(dp), allocatable :: force(:), tangent(:, :), x(:, :), patch_tangent(:, :)
+      integer, allocatable :: face_start(:), node_faces(:)
       real(dp) :: tangential_penalty
       integer :: i, k, n, attempt
       tangential_penalty = 0.0_dp
@@ -151,8 +156,11 @@ contains
             ! an open node's zero block is not added (its node pairs may lie outside the pattern)
             if (.not. present(matrix)) cycle
             if (pass%result(i)%status /= contact_open) then
-               if (.not. allocated(x)) x = current_coordinates(model, u)
-               call node_patch(pass, tangential_penalty > 0.0_dp, x, i, patch)
+               if (.not. allocated(x)) then
+                  x = current_coordinates(model, u)
+                  call faces_around_nodes(size(x, 2), pass%faces, face_start, node_faces)
+               end if
+               call node_patch(pass, tangential_penalty > 0.0_dp, x, face_start, node_faces, i, patch)
             end if
             if (pass%result(i)%status /= contact_open .and. patch%curved) then
                call complete_tangent(pass, parameters, tangential_penalty > 0.0_dp, x, i, friction_scale, patch, &
@@ -166,17 +174,21 @@ contains
    end subroutine assemble_mortar_pass
 
    !> Slave node i's patch (mortar_patch_t) at the current positions x (3, n_nodes): the master
-   !> faces whose box, widened by twice the band, meets that of the node's slave faces and that
-   !> overlap one of them (segment_integrals, the pairing of mortar_rows).
-   subroutine node_patch(pass, frictional, x, i, patch)
+   !> faces that overlap one of the node's slave faces (segment_integrals, the pairing of
+   !> mortar_rows). Such a face gives the node's current row its nodes, so the candidates are
+   !> the master faces around the row's nodes (node_faces(face_start(n) + 1 : face_start(n + 1)),
+   !> faces_around_nodes of pass%faces) whose box, widened by twice the band, meets that of the
+   !> node's slave faces.
+   subroutine node_patch(pass, frictional, x, face_start, node_faces, i, patch)
       type(contact_pass_t), intent(in) :: pass
       logical, intent(in) :: frictional
       real(dp), intent(in) :: x(:, :)
+      integer, intent(in) :: face_start(:), node_faces(:)
       integer, intent(in) :: i
       type(mortar_patch_t), intent(out) :: patch
       real(dp) :: low(3), high(3), master_part(4, 4), slave_part(4, 4)
-      integer, allocatable :: faces(:)
-      integer :: f, g, k
+      integer, allocatable :: faces(:), around(:)
+      integer :: f, g, k, c, node
       logical :: overlap, paired
       faces = pack([(f, f=1, size(pass%slave_faces, 2))], any(pass%slave_faces == pass%slave_nodes(i), dim=1))
       patch%slave_faces = pass%slave_faces(:, faces)
@@ -187,8 +199,14 @@ contains
       low = minval(x(:, patch%slave_nodes), dim=2) - 2.0_dp*pass%band
       high = maxval(x(:, patch%slave_nodes), dim=2) + 2.0_dp*pass%band
       deallocate (faces)
-      allocate (faces(0))
-      do g = 1, size(pass%faces, 2)
+      allocate (faces(0), around(0))
+      do k = pass%mortar_rows%start(i) + 1, pass%mortar_rows%start(i + 1)
+         node = pass%mortar_rows%nodes(k)
+         around = [around, node_faces(face_start(node) + 1:face_start(node + 1))]
+      end do
+      around = sorted_unique(around)   ! in face order, as the pairing of mortar_rows
+      do c = 1, size(around)
+         g = around(c)
          if (any(maxval(x(:, pass%faces(:, g)), dim=2) < low) .or. any(minval(x(:, pass%faces(:, g)), dim=2) > high)) &
             cycle
          paired = .false.

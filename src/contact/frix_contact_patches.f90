@@ -24,7 +24,7 @@ module frix_contact_patches
    private
 
    public :: surface_patches_t, surface_faces, surface_patches, largest_patch_ring, check_patch_rings
-   public :: ring_nodes_of, patch_faces_of, all_faces_angle, surface_is_curved, free_edges
+   public :: ring_nodes_of, patch_faces_of, all_faces_angle, surface_is_curved, free_edges, faces_around_nodes
 
    !> A feature angle (degrees) at or above which every face sharing a node is in the patch
    !> (NORMALS Smoothed), without computing an angle: bit-for-bit the unfiltered patches.
