@@ -51,7 +51,8 @@ module frix_gmsh_context
       integer :: version = 0                     !! 2 (format 2.2) or 4 (format 4.1)
       ! nodes
       integer :: n_nodes = 0
-      integer, allocatable :: node_ids(:), node_lines(:)
+      integer, allocatable :: node_ids(:), node_lines(:)   !! line of the node's id
+      integer, allocatable :: coordinate_lines(:)          !! line of its coordinates (4.1: not the id's)
       real(dp), allocatable :: coords(:, :)
       ! element records kept: hexahedra, and elements of physical groups
       type(integer_list_t) :: record_ids, record_types, record_lines

@@ -71,14 +71,14 @@ contains
    end function mesh_dimension
 
    !> The nodes of a plane mesh lie in the x-y plane (first_off_plane): error naming the
-   !> line of the first that does not.
+   !> coordinate line of the first that does not.
    subroutine check_plane_nodes(file_name, raw, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
       type(error_t), allocatable, intent(out) :: error
       integer :: i
       i = first_off_plane(raw%coords(:, 1:raw%n_nodes))
-      if (i /= 0) call fatal_error(error, file_name//':'//to_string(raw%node_lines(i))//': '// &
+      if (i /= 0) call fatal_error(error, file_name//':'//to_string(raw%coordinate_lines(i))//': '// &
                                    off_plane_message(raw%node_ids(i), raw%coords(3, i)))
    end subroutine check_plane_nodes
 
