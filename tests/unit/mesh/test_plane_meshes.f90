@@ -22,6 +22,7 @@ module test_plane_meshes
    use frix_gmsh_reader, only: read_gmsh
    use frix_inp_reader, only: read_inp
    use test_data_location, only: data_path, tests_path
+   use test_gmsh_reader, only: replaced, write_text, delete_file
    implicit none
    private
 
@@ -62,44 +63,40 @@ contains
    !> Format 2.2 writes the 8 triangles (ids 10-17) before the 4 quadrilaterals (18-21).
    subroutine test_gmsh_v22(error)
       type(error_t), allocatable, intent(out) :: error
-      type(mesh_t) :: mesh
-      type(error_t), allocatable :: read_error
       type(plate_ids_t) :: ids
-      call read_gmsh(data_path('plate2d_v22.msh'), mesh, read_error)
-      call check(error, .not. allocated(read_error), 'read plate2d_v22.msh')
-      if (allocated(error)) return
       ids%quads = [18, 19, 20, 21]
       ids%tris = [10, 11, 12, 13, 14, 15, 16, 17]
       ids%bottom = [10, 14, 18, 20]
       ids%right = [15, 17]
       ids%left = [18, 19]
-      call check_plate(mesh, ids, error)
+      call check_plate('plate2d_v22.msh', ids, error)
    end subroutine test_gmsh_v22
 
    !> Format 4.1 writes the quadrilaterals (ids 10-13) before the triangles (14-21).
    subroutine test_gmsh_v41(error)
       type(error_t), allocatable, intent(out) :: error
-      type(mesh_t) :: mesh
-      type(error_t), allocatable :: read_error
       type(plate_ids_t) :: ids
-      call read_gmsh(data_path('plate2d_v41.msh'), mesh, read_error)
-      call check(error, .not. allocated(read_error), 'read plate2d_v41.msh')
-      if (allocated(error)) return
       ids%quads = [10, 11, 12, 13]
       ids%tris = [14, 15, 16, 17, 18, 19, 20, 21]
       ids%bottom = [10, 12, 14, 18]
       ids%right = [19, 21]
       ids%left = [10, 11]
-      call check_plate(mesh, ids, error)
+      call check_plate('plate2d_v41.msh', ids, error)
    end subroutine test_gmsh_v41
 
-   !> The plate of plate2d.geo: 15 nodes in the x-y plane, 12 elements, the sets of its
-   !> physical groups in (dim, tag) order, edges 1 on "bottom", 2 on "right", 4 on "left".
-   subroutine check_plate(mesh, ids, error)
-      type(mesh_t), intent(in) :: mesh
+   !> The plate of plate2d.geo read from data file `name`: 15 nodes in the x-y plane, 12
+   !> elements, the sets of its physical groups in (dim, tag) order, edges 1 on "bottom", 2 on
+   !> "right", 4 on "left".
+   subroutine check_plate(name, ids, error)
+      character(len=*), intent(in) :: name
       type(plate_ids_t), intent(in) :: ids
       type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: read_error
       integer :: e
+      call read_gmsh(data_path(name), mesh, read_error)
+      call check(error, .not. allocated(read_error), 'read '//name)
+      if (allocated(error)) return
       call check(error, mesh%n_nodes == 15 .and. mesh%n_elements == 12, 'plate: 15 nodes and 12 elements, got '// &
                  to_string(mesh%n_nodes)//' and '//to_string(mesh%n_elements))
       if (allocated(error)) return
@@ -360,40 +357,20 @@ contains
       end do
    end function set_names
 
-   !> `text` with its first `old` replaced by `new` (unchanged if `old` does not occur: the
-   !> test then fails for want of the expected result).
-   function replaced(text, old, new) result(changed)
-      character(len=*), intent(in) :: text, old, new
-      character(len=:), allocatable :: changed
-      integer :: at
-      at = index(text, old)
-      if (at == 0) then
-         changed = text
-      else
-         changed = text(1:at - 1)//new//text(at + len(old):)
-      end if
-   end function replaced
-
    !> Write `text` to the file `name`, read it (with read_inp if `inp`, else read_gmsh), delete it.
    subroutine read_text(name, text, inp, mesh, read_error, error)
       character(len=*), intent(in) :: name, text
       logical, intent(in) :: inp
       type(mesh_t), intent(out) :: mesh
       type(error_t), allocatable, intent(out) :: read_error, error
-      integer :: unit, status
-      open (newunit=unit, file=output_path(name), status='replace', access='stream', form='unformatted', &
-            action='write', iostat=status)
-      call check(error, status == 0, 'cannot write '//output_path(name))
+      call write_text(name, text, error)
       if (allocated(error)) return
-      write (unit) text
-      close (unit)
       if (inp) then
          call read_inp(output_path(name), mesh, read_error)
       else
          call read_gmsh(output_path(name), mesh, read_error)
       end if
-      open (newunit=unit, file=output_path(name), status='old', iostat=status)
-      if (status == 0) close (unit, status='delete')
+      call delete_file(name)
    end subroutine read_text
 
    !> Read `text` (written to `name`), expecting an error containing "<path>:" then `fragment`.
