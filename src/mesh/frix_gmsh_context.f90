@@ -54,7 +54,7 @@ module frix_gmsh_context
       integer, allocatable :: node_ids(:), node_lines(:)   !! line of the node's id
       integer, allocatable :: coordinate_lines(:)          !! line of its coordinates (4.1: not the id's)
       real(dp), allocatable :: coords(:, :)
-      ! element records kept: hexahedra, and elements of physical groups
+      ! element records kept: volume cells, quadrilaterals and triangles, and elements of physical groups
       type(integer_list_t) :: record_ids, record_types, record_lines
       type(integer_list_t) :: record_node_first   !! record r: nodes(first(r):first(r+1)-1)
       type(integer_list_t) :: record_nodes        !! user node ids

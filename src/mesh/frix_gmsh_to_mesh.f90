@@ -20,7 +20,8 @@ module frix_gmsh_to_mesh
    use frix_cell_registry, only: cell_entry_t, cell_table, max_cell_nodes
    use frix_mesh_checks, only: node_to_elements
    use frix_mesh_selection, only: sort_nodes
-   use frix_gmsh_context, only: is_element_cell, is_boundary_cell, first_off_plane, off_plane_message, raw_mesh_t
+   use frix_gmsh_context, only: is_element_cell, is_boundary_cell, first_off_plane, off_plane_message, &
+                                raw_mesh_t
    implicit none
    private
 
