@@ -7,7 +7,7 @@
 module frix_gmsh_context
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, scientific
    use frix_text_scanner, only: text_scanner_t
    use frix_id_map, only: id_map_t
    use frix_hex8_cell, only: hex8_gmsh_type
@@ -144,7 +144,7 @@ contains
       integer, intent(in) :: id
       real(dp), intent(in) :: z
       character(len=:), allocatable :: message
-      message = 'node '//to_string(id)//' has z = '//to_string(z)//': the mesh has plane elements (no volume '// &
+      message = 'node '//to_string(id)//' has z = '//scientific(z, 6)//': the mesh has plane elements (no volume '// &
                 'elements), whose nodes lie in the x-y plane (z = 0)'
    end function off_plane_message
 
