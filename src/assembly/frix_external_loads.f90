@@ -132,13 +132,15 @@ contains
    !> Constrained equations and their prescribed values at time t. Nodes that belong to no
    !> element have no stiffness: they are held fixed, except the reference and rotation nodes
    !> of kinematic couplings (frix_kinematic_coupling), which receive the coupled nodes' stiffness.
+   !> The nodes of plane strain and axisymmetric elements (cells of dimension 2) move in the
+   !> x-y plane: their z displacement is held at 0.
    subroutine prescribed_displacements(model, time, fixed, values)
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: time
       logical, intent(out) :: fixed(:)
       real(dp), intent(out) :: values(:)
       logical, allocatable :: in_element(:)
-      integer :: i, k, equation, node
+      integer :: i, k, equation, node, e
       fixed = .false.
       values = 0.0_dp
       if (allocated(model%dirichlet)) then
@@ -160,6 +162,14 @@ contains
       end if
       do node = 1, model%mesh%n_nodes
          if (.not. in_element(node)) fixed(3*node - 2:3*node) = .true.
+      end do
+      do e = 1, model%mesh%n_elements
+         if (model%mesh%cell_dimension(e) /= 2) cycle
+         do k = 1, model%mesh%node_count(e)
+            node = model%mesh%connectivity(k, e)
+            fixed(3*node) = .true.
+            values(3*node) = 0.0_dp
+         end do
       end do
    end subroutine prescribed_displacements
 

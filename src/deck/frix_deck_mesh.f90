@@ -135,7 +135,7 @@ contains
    end subroutine read_node_coords
 
    !> `BLOCK <name> ORIGIN x y z SIZE lx ly lz DIVISIONS nx ny nz [NODE_OFFSET n]
-   !> [ELEMENT_OFFSET n]`: node ids start at NODE_OFFSET + 1 (default: after the largest
+   !> [ELEMENT_OFFSET n]` (lz 0 and nz 0: a plane block of QUAD4): node ids start at NODE_OFFSET + 1 (default: after the largest
    !> existing id), likewise elements.
    subroutine read_mesh_blocks(reader, model)
       type(deck_reader_t), intent(inout) :: reader
@@ -171,7 +171,8 @@ contains
                   position = position + 1
                   k = position
                   call reader%take_reals(line, position, 'a SIZE length', lengths, ok)
-                  call require(reader, ok, all(lengths > 0.0_dp), line, k, 'SIZE lengths must be positive')
+                  call require(reader, ok, all(lengths(1:2) > 0.0_dp) .and. lengths(3) >= 0.0_dp, line, k, &
+                               'SIZE lengths must be positive (lz 0 for a plane block)')
                   has(2) = .true.
                case ('DIVISIONS')
                   position = position + 1
@@ -179,7 +180,8 @@ contains
                   do while (position < k + 3 .and. ok)
                      call reader%take_integer(line, position, 'a DIVISIONS count', divisions(position - k + 1), ok)
                   end do
-                  call require(reader, ok, all(divisions >= 1), line, k, 'DIVISIONS must be at least 1')
+                  call require(reader, ok, all(divisions(1:2) >= 1) .and. divisions(3) >= 0, line, k, &
+                               'DIVISIONS must be at least 1 (nz 0 for a plane block)')
                   has(3) = .true.
                case ('NODE_OFFSET')
                   position = position + 1
@@ -199,6 +201,10 @@ contains
             ok = line_ok
             if (ok .and. .not. all(has)) then
                call reader%report(line, line%n_tokens() + 1, 'a BLOCK needs ORIGIN, SIZE and DIVISIONS')
+               ok = .false.
+            end if
+            if (ok .and. ((divisions(3) == 0) .neqv. (lengths(3) == 0.0_dp))) then
+               call reader%report(line, 2, 'a plane block (QUAD4) has both SIZE lz 0 and DIVISIONS nz 0')
                ok = .false.
             end if
             if (.not. ok) then

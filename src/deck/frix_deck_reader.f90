@@ -181,6 +181,8 @@ contains
          call report_elements(reader, model, bad, 'has a non-positive Jacobian (inverted or degenerate)')
          call report_elements(reader, model, overflowing, 'has a Jacobian beyond the range of real '// &
                               'numbers (coordinates too large)')
+         call report_elements(reader, model, other_dimension(model), 'is a plane element among solids or a '// &
+                              'solid among plane elements (a model is either plane or three-dimensional)')
       end if
 
       if (model%mesh%n_nodes > 0 .and. .not. reader%mesh_failed) then
@@ -197,6 +199,15 @@ contains
          end do
       end if
    end subroutine validate_model
+
+   !> The elements whose cell's dimension differs from the first element's.
+   function other_dimension(model) result(elements)
+      type(model_t), intent(in) :: model
+      integer, allocatable :: elements(:)
+      integer :: e
+      elements = pack([(e, e=1, model%mesh%n_elements)], &
+                      [(model%mesh%cell_dimension(e) /= model%mesh%cell_dimension(1), e=1, model%mesh%n_elements)])
+   end function other_dimension
 
    !> Whether `node` is the reference or rotation node of a coupling (these carry conditions
    !> and loads without an element).

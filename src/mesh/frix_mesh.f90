@@ -56,6 +56,7 @@ module frix_mesh
       procedure :: cell_of
       procedure :: node_count
       procedure :: face_count
+      procedure :: cell_dimension
       procedure :: element_nodes
       procedure :: face_nodes
       procedure :: has_only_hex8
@@ -123,6 +124,15 @@ contains
       node_count = 8
       if (allocated(self%element_cell)) node_count = self%cells(self%element_cell(e))%cell%n_nodes
    end function node_count
+
+   !> The dimension of element e's cell: 3 for the solids, 2 for the plane strain and
+   !> axisymmetric elements (whose nodes move in the x-y plane only).
+   pure integer function cell_dimension(self, e)
+      class(mesh_t), intent(in) :: self
+      integer, intent(in) :: e
+      cell_dimension = 3
+      if (allocated(self%element_cell)) cell_dimension = self%cells(self%element_cell(e))%cell%dimension
+   end function cell_dimension
 
    !> Faces of element e.
    pure integer function face_count(self, e)

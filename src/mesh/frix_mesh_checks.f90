@@ -66,13 +66,20 @@ contains
    end subroutine check_element_jacobians
 
    !> det(dx/dxi) of the cell's map x(xi) = sum_a N_a(xi) x_a with nodal coordinates x(3, n_nodes)
-   !> at natural point xi.
+   !> at natural point xi. A cell of dimension 2 (the plane strain and axisymmetric elements,
+   !> which lie in the x-y plane): the in-plane det(d(x, y)/d(xi, eta)), positive when its nodes
+   !> run counter-clockwise seen from +z.
    pure real(dp) function jacobian_determinant(cell, x, xi) result(determinant)
       class(reference_cell_t), intent(in) :: cell
       real(dp), intent(in) :: x(:, :), xi(:)
       real(dp) :: values(cell%n_nodes), derivatives(3, cell%n_nodes), jacobian(3, 3)
-      call cell%shape_functions(xi, values, derivatives)
+      derivatives = 0.0_dp
+      call cell%shape_functions(xi, values, derivatives(1:cell%dimension, :))
       jacobian = matmul(x, transpose(derivatives))    ! jacobian(i, k) = d x_i / d xi_k
+      if (cell%dimension == 2) then
+         determinant = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
+         return
+      end if
       determinant = jacobian(1, 1)*(jacobian(2, 2)*jacobian(3, 3) - jacobian(3, 2)*jacobian(2, 3)) &
                     - jacobian(1, 2)*(jacobian(2, 1)*jacobian(3, 3) - jacobian(3, 1)*jacobian(2, 3)) &
                     + jacobian(1, 3)*(jacobian(2, 1)*jacobian(3, 2) - jacobian(3, 1)*jacobian(2, 2))
