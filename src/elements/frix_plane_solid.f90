@@ -24,8 +24,8 @@
 !>   K_ab = sum_g (B_NL,a^T C B_NL,b + [total Lagrangian] G_ab) dV0, with the geometric part
 !>   G_ab = (Grad N_a . S_2x2 . Grad N_b) I_2 + [axisymmetric] S_33 N_a N_b / R^2 on (x, x)
 !>   (d^2 E_33 / du_ax du_bx = N_a N_b / R^2; Bathe 6.3.4).
-!> The Cauchy stress is F S F^T / det F (frix_solid_kinematics). No enhanced strains:
-!> n_enhanced = 0.
+!> The Cauchy stress is F S F^T / det F (frix_solid_kinematics). The element extends
+!> frix_cell_solid's (cell, shape tables, node and point counts; no enhanced strains).
 !>
 !> Edge pressure (face_pressure): on an edge (LINE2 cell, its own 2-point Gauss rule) listed
 !> counter-clockwise around the element, the outward normal times the length element is
@@ -38,7 +38,8 @@ module frix_plane_solid
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_material, only: material_t
-   use frix_element, only: element_t, kinematics_total_lagrangian
+   use frix_element, only: kinematics_total_lagrangian
+   use frix_cell_solid, only: cell_solid_t, new_cell_solid
    use frix_reference_cell, only: reference_cell_t
    use frix_vector_algebra, only: determinant
    use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
@@ -50,16 +51,12 @@ module frix_plane_solid
 
    real(dp), parameter :: two_pi = 8.0_dp*atan(1.0_dp)
 
-   type, extends(element_t) :: plane_solid_t
-      class(reference_cell_t), allocatable :: cell       !! a cell of dimension 2
+   !> The cell, its shape tables and the counts are frix_cell_solid's (natural_derivatives:
+   !> (2, n_nodes, n_points) on a 2D cell).
+   type, extends(cell_solid_t) :: plane_solid_t
       logical :: axisymmetric = .false.
       real(dp) :: thickness = 1.0_dp                     !! t (length unit), plane strain only
-      real(dp), allocatable :: shape_values(:, :)        !! N_a at point g, (n_nodes, n_points)
-      real(dp), allocatable :: natural_derivatives(:, :, :)   !! dN_a/dxi_d at g, (2, n_nodes, n_points)
    contains
-      procedure :: n_nodes => plane_solid_n_nodes
-      procedure :: n_points => plane_solid_n_points
-      procedure :: n_enhanced => plane_solid_n_enhanced
       procedure :: evaluate => plane_solid_evaluate
       procedure :: volume_weights => plane_solid_volume_weights
       procedure :: point_positions => plane_solid_point_positions
@@ -84,32 +81,11 @@ contains
       logical, intent(in) :: axisymmetric
       real(dp), intent(in), optional :: thickness
       type(plane_solid_t) :: element
+      element%cell_solid_t = new_cell_solid(cell, kinematics)
       element%name = name
-      element%kinematics = kinematics
       element%axisymmetric = axisymmetric
       if (present(thickness)) element%thickness = thickness
-      allocate (element%cell, source=cell)
-      element%shape_values = cell%values_at_points()
-      element%natural_derivatives = cell%derivatives_at_points()
    end function new_plane_solid
-
-   pure function plane_solid_n_nodes(self) result(n)
-      class(plane_solid_t), intent(in) :: self
-      integer :: n
-      n = self%cell%n_nodes
-   end function plane_solid_n_nodes
-
-   pure function plane_solid_n_points(self) result(n)
-      class(plane_solid_t), intent(in) :: self
-      integer :: n
-      n = self%cell%n_points()
-   end function plane_solid_n_points
-
-   pure function plane_solid_n_enhanced(self) result(n)
-      class(plane_solid_t), intent(in) :: self
-      integer :: n
-      n = 0
-   end function plane_solid_n_enhanced
 
    !> J^{-1} dN/dxi (2, n_nodes), detJ and R at point g.
    pure subroutine point_jacobian(self, coords, g, dn_dx, det, radius)
