@@ -41,8 +41,7 @@ module frix_plane_solid
    use frix_element, only: kinematics_total_lagrangian
    use frix_cell_solid, only: cell_solid_t, new_cell_solid
    use frix_reference_cell, only: reference_cell_t
-   use frix_vector_algebra, only: determinant
-   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
+   use frix_solid_kinematics, only: compatible_kinematics, deformed_material_pass, nonlinear_b, point_stresses, &
                                     tensor_from_voigt
    implicit none
    private
@@ -233,26 +232,17 @@ contains
       planar(3, :) = 0.0_dp
       do g = 1, n_points
          call point_kinematics(self, geometry, g, planar, total_lagrangian, deformation(:, :, g), total(:, g))
-         if (total_lagrangian .and. .not. (determinant(deformation(:, :, g)) > 0.0_dp)) then
-            call fatal_error(error, self%name//': non-positive deformation gradient determinant '// &
-                             to_string(determinant(deformation(:, :, g)))//' at integration point '//to_string(g))
-            return
-         end if
       end do
       if (present(initial_stress)) then
-         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error, &
-                            initial_stress(:, 1:n_points))
+         call deformed_material_pass(self%name, material, total_lagrangian, deformation, total, state_old, state_new, &
+                                     pk2, moduli, error, initial_stress)
       else
-         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error)
+         call deformed_material_pass(self%name, material, total_lagrangian, deformation, total, state_old, state_new, &
+                                     pk2, moduli, error)
       end if
       if (allocated(error)) return
       call force_and_tangent(self, geometry, deformation, pk2, moduli, total_lagrangian, fint, tangent)
-      if (present(stress)) then
-         do g = 1, n_points
-            stress(:, g) = pk2(:, g)
-            if (total_lagrangian) stress(:, g) = cauchy_from_pk2(deformation(:, :, g), pk2(:, g))
-         end do
-      end if
+      if (present(stress)) call point_stresses(total_lagrangian, deformation, pk2, stress)
       if (present(strain)) strain(:, 1:n_points) = total
    end subroutine plane_solid_evaluate
 
