@@ -36,7 +36,7 @@ module frix_cell_solid
    type, extends(element_t) :: cell_solid_t
       class(reference_cell_t), allocatable :: cell
       real(dp), allocatable :: shape_values(:, :)        !! N_a at point g, (n_nodes, n_points)
-      real(dp), allocatable :: natural_derivatives(:, :, :)   !! dN_a/dxi_d at g, (3, n_nodes, n_points)
+      real(dp), allocatable :: natural_derivatives(:, :, :)   !! dN_a/dxi_d at g, (cell dimension, n_nodes, n_points)
    contains
       procedure :: n_nodes => cell_solid_n_nodes
       procedure :: n_points => cell_solid_n_points
