@@ -39,6 +39,10 @@ module frix_element
       !> face of this element; by default the surface load of a 3D element's face
       !> (frix_surface_load); 2D elements integrate over their edges (frix_plane_solid).
       procedure :: face_pressure => element_face_pressure
+      !> Whether the element's own stiffness resists a rigid translation in `direction` (1-3):
+      !> .false. for a solid; an axisymmetric element resists u_r (its hoop strain u_r / r).
+      !> The deck's support check (frix_deck_supports) asks.
+      procedure :: resists_translation => element_resists_translation
    end type element_t
 
    type :: element_slot_t
@@ -117,6 +121,12 @@ contains
          call pressure_load(face, coords, u, pressure, follower, force)
       end if
    end subroutine element_face_pressure
+
+   pure logical function element_resists_translation(self, direction)
+      class(element_t), intent(in) :: self
+      integer, intent(in) :: direction
+      element_resists_translation = .false.
+   end function element_resists_translation
 
    pure function kinematics_name(kinematics) result(name)
       integer, intent(in) :: kinematics

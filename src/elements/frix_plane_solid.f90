@@ -60,6 +60,7 @@ module frix_plane_solid
       procedure :: volume_weights => plane_solid_volume_weights
       procedure :: point_positions => plane_solid_point_positions
       procedure :: face_pressure => plane_solid_face_pressure
+      procedure :: resists_translation => plane_solid_resists_translation
    end type plane_solid_t
 
    !> The reference geometry of the element at its points.
@@ -324,5 +325,13 @@ contains
          end do
       end do
    end subroutine plane_solid_face_pressure
+
+   !> An axisymmetric element resists a uniform radial displacement (direction 1, x = r): it
+   !> strains the ring by u_r / r. No element resists a translation along the axis (y).
+   pure logical function plane_solid_resists_translation(self, direction)
+      class(plane_solid_t), intent(in) :: self
+      integer, intent(in) :: direction
+      plane_solid_resists_translation = self%axisymmetric .and. direction == 1
+   end function plane_solid_resists_translation
 
 end module frix_plane_solid
