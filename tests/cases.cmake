@@ -281,3 +281,5 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/footing/footing.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/pipe_soil/pipe_soil.cmake)
 # SOLVER Petsc (tests/solver/petsc.cmake).
 include(${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc.cmake)
+# Plane strain and axisymmetric elements (tests/plane).
+include(${CMAKE_CURRENT_SOURCE_DIR}/plane/plane.cmake)

@@ -1,11 +1,12 @@
 !> External forces at pseudo time t and the prescribed displacements.
+!> A pressure on an element face is integrated by the element's formulation (element_t%face_pressure:
+!> the face of a solid, the edge of a plane element with its thickness or 2 pi r).
 !> Sign convention: the residual is r = fext - fint; a follower pressure's load stiffness
 !> K_load = d fext / d u enters the Newton matrix as K = d fint/du - K_load.
 module frix_external_loads
    use frix_kinds, only: dp
    use frix_model, only: model_t, curve_factor
    use frix_system_matrix, only: system_matrix_t
-   use frix_surface_load, only: pressure_load
    use frix_cell_registry, only: cell_entry_t, cell_table, find_in_table
    implicit none
    private
@@ -65,8 +66,10 @@ contains
                      coords(:, a) = model%mesh%coords(:, node)
                      displacement(:, a) = u(3*node - 2:3*node)
                   end do
-                  call pressure_load(table(face_cell)%cell, coords, displacement, factor, load%follower, force, &
-                                     stiffness)
+                  associate (element => model%blocks(model%mesh%element_block(e))%element%formulation)
+                     call element%face_pressure(table(face_cell)%cell, coords, displacement, factor, load%follower, &
+                                                force, stiffness)
+                  end associate
                   do a = 1, size(face_nodes)
                      node = face_nodes(a)
                      fext(3*node - 2:3*node) = fext(3*node - 2:3*node) + force(3*a - 2:3*a)

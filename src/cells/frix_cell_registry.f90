@@ -8,6 +8,7 @@ module frix_cell_registry
    use frix_tri3_cell, only: new_tri3_cell
    use frix_tet10_cell, only: new_tet10_cell
    use frix_tri6_cell, only: new_tri6_cell
+   use frix_line2_cell, only: new_line2_cell
    implicit none
    private
 
@@ -26,13 +27,14 @@ contains
    !> Every known cell, one line each.
    function cell_table() result(table)
       type(cell_entry_t), allocatable :: table(:)
-      allocate (table(6))
+      allocate (table(7))
       allocate (table(1)%cell, source=new_hex8_cell())
       allocate (table(2)%cell, source=new_quad4_cell())
       allocate (table(3)%cell, source=new_tet4_cell())
       allocate (table(4)%cell, source=new_tri3_cell())
       allocate (table(5)%cell, source=new_tet10_cell())
       allocate (table(6)%cell, source=new_tri6_cell())
+      allocate (table(7)%cell, source=new_line2_cell())   ! the edge of QUAD4 and TRI3
    end function cell_table
 
    !> The cell with `name` (upper case), VTK code `vtk_type` or gmsh code `gmsh_type`, whichever

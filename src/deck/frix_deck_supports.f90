@@ -10,7 +10,9 @@
 !>   one body (a periodic or seam tie) leaves that body to its own supports. Necessary, not
 !>   sufficient: a body held at one node can still rotate; the factorization then names the
 !>   node where it broke down. Reported at the line that created the body's first element.
-!>   A kinematic coupling holds its coupled nodes' bodies where its reference node is fixed.
+!>   A kinematic coupling holds its coupled nodes' bodies where its reference node is fixed; an
+!>   element that resists a translation itself (element_t%resists_translation: the radial one
+!>   of axisymmetric elements) holds its body in that direction.
 module frix_deck_supports
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -55,7 +57,7 @@ contains
       integer, allocatable :: body_of_node(:), group(:), first_element(:), element_count(:)
       logical, allocatable :: fixed(:), held(:, :), in_contact(:)
       real(dp), allocatable :: values(:)
-      integer :: n_bodies, node, e, body, line
+      integer :: n_bodies, node, e, body, line, direction
       call connected_components(model%mesh, body_of_node, n_bodies)
       group = tie_groups(model, body_of_node, n_bodies)
       allocate (fixed(3*model%mesh%n_nodes), values(3*model%mesh%n_nodes))
@@ -72,6 +74,11 @@ contains
          body = group(body_of_node(model%mesh%connectivity(1, e)))
          if (first_element(body) == 0) first_element(body) = e
          element_count(body) = element_count(body) + 1
+         associate (element => model%blocks(model%mesh%element_block(e))%element%formulation)
+            do direction = 1, 3
+               if (element%resists_translation(direction)) held(direction, body) = .true.
+            end do
+         end associate
       end do
       do body = 1, n_bodies
          if (element_count(body) == 0 .or. all(held(:, body))) cycle   ! (0: not a group's representative)

@@ -26,7 +26,7 @@ module frix_cell_solid
    use frix_reference_cell, only: reference_cell_t
    use frix_tet4_cell, only: new_tet4_cell
    use frix_tet10_cell, only: new_tet10_cell
-   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
+   use frix_solid_kinematics, only: compatible_kinematics, deformed_material_pass, nonlinear_b, point_stresses, &
                                     tensor_from_voigt
    implicit none
    private
@@ -36,7 +36,7 @@ module frix_cell_solid
    type, extends(element_t) :: cell_solid_t
       class(reference_cell_t), allocatable :: cell
       real(dp), allocatable :: shape_values(:, :)        !! N_a at point g, (n_nodes, n_points)
-      real(dp), allocatable :: natural_derivatives(:, :, :)   !! dN_a/dxi_d at g, (3, n_nodes, n_points)
+      real(dp), allocatable :: natural_derivatives(:, :, :)   !! dN_a/dxi_d at g, (cell dimension, n_nodes, n_points)
    contains
       procedure :: n_nodes => cell_solid_n_nodes
       procedure :: n_points => cell_solid_n_points
@@ -169,27 +169,18 @@ contains
       if (allocated(error)) return
       do g = 1, n_points
          call compatible_kinematics(dn_dx(:, :, g), u, total_lagrangian, deformation(:, :, g), total(:, g))
-         if (total_lagrangian .and. .not. (determinant(deformation(:, :, g)) > 0.0_dp)) then
-            call fatal_error(error, self%name//': non-positive deformation gradient determinant '// &
-                             to_string(determinant(deformation(:, :, g)))//' at integration point '//to_string(g))
-            return
-         end if
       end do
       if (present(initial_stress)) then
-         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error, &
-                            initial_stress(:, 1:n_points))
+         call deformed_material_pass(self%name, material, total_lagrangian, deformation, total, state_old, state_new, &
+                                     pk2, moduli, error, initial_stress)
       else
-         call material_pass(self%name, material, total_lagrangian, total, state_old, state_new, pk2, moduli, error)
+         call deformed_material_pass(self%name, material, total_lagrangian, deformation, total, state_old, state_new, &
+                                     pk2, moduli, error)
       end if
       if (allocated(error)) return
       call internal_force(dn_dx, volume, deformation, pk2, fint)
       if (present(tangent)) call element_tangent(dn_dx, volume, deformation, pk2, moduli, total_lagrangian, tangent)
-      if (present(stress)) then
-         do g = 1, n_points
-            stress(:, g) = pk2(:, g)
-            if (total_lagrangian) stress(:, g) = cauchy_from_pk2(deformation(:, :, g), pk2(:, g))
-         end do
-      end if
+      if (present(stress)) call point_stresses(total_lagrangian, deformation, pk2, stress)
       if (present(strain)) strain(:, 1:n_points) = total
    end subroutine cell_solid_evaluate
 

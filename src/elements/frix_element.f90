@@ -9,6 +9,8 @@ module frix_element
    use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_material, only: material_t
+   use frix_reference_cell, only: reference_cell_t
+   use frix_surface_load, only: pressure_load
    implicit none
    private
 
@@ -33,6 +35,14 @@ module frix_element
       !> Reference positions of the integration points, X_g = sum_a N_a(xi_g) X_a (where a
       !> point's initial stress is evaluated, frix_initial_stress).
       procedure(positions_interface), deferred :: point_positions
+      !> Equivalent nodal forces (and follower load stiffness) of a uniform pressure on one
+      !> face of this element; by default the surface load of a 3D element's face
+      !> (frix_surface_load); 2D elements integrate over their edges (frix_plane_solid).
+      procedure :: face_pressure => element_face_pressure
+      !> Whether the element's own stiffness resists a rigid translation in `direction` (1-3):
+      !> .false. for a solid; an axisymmetric element resists u_r (its hoop strain u_r / r).
+      !> The deck's support check (frix_deck_supports) asks.
+      procedure :: resists_translation => element_resists_translation
    end type element_t
 
    type :: element_slot_t
@@ -91,6 +101,32 @@ module frix_element
    end interface
 
 contains
+
+   !> A uniform pressure on the face `face` (the face's reference cell) of a 3D element:
+   !> pressure_load of frix_surface_load, with its conventions (p > 0 pushes into the body;
+   !> follower: current geometry and the unsymmetric load stiffness d fext / d u; dead:
+   !> reference geometry, zero tangent).
+   pure subroutine element_face_pressure(self, face, coords, u, pressure, follower, force, tangent)
+      class(element_t), intent(in) :: self
+      class(reference_cell_t), intent(in) :: face   !! the face's cell
+      real(dp), intent(in) :: coords(:, :)    !! (3, face nodes) reference coordinates
+      real(dp), intent(in) :: u(:, :)         !! (3, face nodes) total displacements
+      real(dp), intent(in) :: pressure        !! p (stress unit), > 0 pushes into the body
+      logical, intent(in) :: follower         !! .true.: current normal and area
+      real(dp), intent(out) :: force(:)       !! (3 face nodes) fext, node-major
+      real(dp), intent(out), optional :: tangent(:, :)  !! (3 face nodes, same) d fext / d u
+      if (present(tangent)) then
+         call pressure_load(face, coords, u, pressure, follower, force, tangent)
+      else
+         call pressure_load(face, coords, u, pressure, follower, force)
+      end if
+   end subroutine element_face_pressure
+
+   pure logical function element_resists_translation(self, direction)
+      class(element_t), intent(in) :: self
+      integer, intent(in) :: direction
+      element_resists_translation = .false.
+   end function element_resists_translation
 
    pure function kinematics_name(kinematics) result(name)
       integer, intent(in) :: kinematics

@@ -12,6 +12,7 @@ module frix_solid_kinematics
    private
 
    public :: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, tensor_from_voigt
+   public :: deformed_material_pass, point_stresses
 
 contains
 
@@ -81,6 +82,50 @@ contains
          end if
       end do
    end subroutine material_pass
+
+   !> material_pass after checking det F > 0 at every point (total Lagrangian); an error names
+   !> the first point with det F <= 0. Used by the elements without enhanced strains
+   !> (frix_cell_solid, frix_plane_solid).
+   subroutine deformed_material_pass(name, material, finite, deformation, total, state_old, state_new, pk2, moduli, &
+                                     error, initial_stress)
+      character(len=*), intent(in) :: name
+      class(material_t), intent(in) :: material
+      logical, intent(in) :: finite   !! total Lagrangian: total = E, pk2 = S
+      real(dp), intent(in) :: deformation(:, :, :)   !! (3, 3, n_points) F
+      real(dp), intent(in) :: total(:, :)            !! (6, n_points)
+      real(dp), intent(in) :: state_old(:, :)
+      real(dp), intent(inout) :: state_new(:, :)
+      real(dp), intent(out) :: pk2(:, :), moduli(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: initial_stress(:, :)
+      integer :: g, n_points
+      n_points = size(total, 2)
+      do g = 1, n_points
+         if (finite .and. .not. (determinant(deformation(:, :, g)) > 0.0_dp)) then
+            call fatal_error(error, name//': non-positive deformation gradient determinant '// &
+                             to_string(determinant(deformation(:, :, g)))//' at integration point '//to_string(g))
+            return
+         end if
+      end do
+      if (present(initial_stress)) then
+         call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error, &
+                            initial_stress(:, 1:n_points))
+      else
+         call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
+      end if
+   end subroutine deformed_material_pass
+
+   !> The Cauchy stress at every point: S under linear kinematics, F S F^T / det F otherwise.
+   pure subroutine point_stresses(finite, deformation, pk2, stress)
+      logical, intent(in) :: finite
+      real(dp), intent(in) :: deformation(:, :, :), pk2(:, :)   !! (3, 3, n_points), (6, n_points)
+      real(dp), intent(out) :: stress(:, :)                     !! (6, n_points)
+      integer :: g
+      do g = 1, size(pk2, 2)
+         stress(:, g) = pk2(:, g)
+         if (finite) stress(:, g) = cauchy_from_pk2(deformation(:, :, g), pk2(:, g))
+      end do
+   end subroutine point_stresses
 
    !> Nodal blocks of dE/du (Voigt, engineering shears): column i of node a holds
    !> dE_jk/du_ai = (F_ij N_a,k + F_ik N_a,j)/2, doubled in the shear rows. F = I gives the

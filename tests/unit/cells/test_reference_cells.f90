@@ -213,7 +213,7 @@ contains
       call find_cell(cell, found, name='PYRAMID13')
       call check(error, .not. found .and. .not. allocated(cell), 'an unknown name is found')
       if (allocated(error)) return
-      call check(error, cell_names() == 'HEX8 QUAD4 TET4 TRI3 TET10 TRI6', 'cell names: '//cell_names())
+      call check(error, cell_names() == 'HEX8 QUAD4 TET4 TRI3 TET10 TRI6 LINE2', 'cell names: '//cell_names())
       if (allocated(error)) return
       call check(error, table(hex8_cell_index)%cell%name == 'HEX8', 'hex8_cell_index is not HEX8''s line')
    end subroutine test_registry

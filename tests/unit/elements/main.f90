@@ -9,6 +9,7 @@ program test_elements
    use test_tet10, only: collect_tet10
    use test_element_initial_stress, only: collect_element_initial_stress
    use test_hex8_degenerate, only: collect_hex8_degenerate
+   use test_plane_solid, only: collect_plane_solid
    implicit none
    call run_suites([new_testsuite('hex8', collect_hex8), &
                     new_testsuite('hex8_thin', collect_hex8_thin), &
@@ -17,5 +18,6 @@ program test_elements
                     new_testsuite('tet4', collect_tet4), &
                     new_testsuite('tet10', collect_tet10), &
                     new_testsuite('initial_stress', collect_element_initial_stress), &
-                    new_testsuite('hex8_degenerate', collect_hex8_degenerate)])
+                    new_testsuite('hex8_degenerate', collect_hex8_degenerate), &
+                    new_testsuite('plane_solid', collect_plane_solid)])
 end program test_elements

@@ -120,8 +120,8 @@ contains
       call check(error, found .and. shape%n_nodes == 10 .and. shape%cell == 'TET10' .and. size(shape%options) == 0, &
                  'TET10 shape: 10 nodes on TET10 cells, no options')
       if (allocated(error)) return
-      call check(error, element_shape_choices() == 'HEX8, HEXA8-E3, TET4 or TET10' .and. element_shape_example() == 'HEX8' &
-                 .and. max_element_nodes() == 10, 'choices '//element_shape_choices())
+      call check(error, element_shape_choices() == 'HEX8, HEXA8-E3, TET4, TET10, PLANE4, AXISYM4, PLANE3 or AXISYM3' &
+                 .and. element_shape_example() == 'HEX8' .and. max_element_nodes() == 10, 'choices '//element_shape_choices())
    end subroutine test_shape_info
 
    subroutine test_unknown_option(error)

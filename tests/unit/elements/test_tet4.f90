@@ -97,7 +97,7 @@ contains
    !> over its 3 n_nodes dofs; K symmetric (the laws here have symmetric tangents). With
    !> `plastic`, some point must yield (history entry 2, YIELDED, of MAT_3DMisesPlastic).
    subroutine check_tangent(element, material, coords, u, error, plastic)
-      type(cell_solid_t), intent(in) :: element
+      class(element_t), intent(in) :: element
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: coords(:, :), u(:, :)
       type(error_t), allocatable, intent(out) :: error
