@@ -1,7 +1,8 @@
 // The cantilever of tests/plane/beam_plane.dck (10 x 1 in the x-y plane, 20 x 4 quadrilaterals)
 // as a gmsh mesh: gmsh -2 beam.geo -format msh41 -o beam.msh
-// Physical surface "beam" (the elements), physical curves "beam_xmin" (x = 0) and "beam_xmax"
-// (x = 10): the names of MESH BLOCK's sets, so that the decks differ only in their mesh.
+// Physical surface "beam" (the elements), physical curves "beam_xmin" (x = 0), "beam_xmax"
+// (x = 10) and "beam_ymax" (y = 1): the names of MESH BLOCK's sets, so that the decks differ
+// only in their mesh.
 Point(1) = {0, 0, 0};
 Point(2) = {10, 0, 0};
 Point(3) = {10, 1, 0};
@@ -19,3 +20,4 @@ Recombine Surface {1};
 Physical Surface("beam") = {1};
 Physical Curve("beam_xmin") = {4};
 Physical Curve("beam_xmax") = {2};
+Physical Curve("beam_ymax") = {3};
