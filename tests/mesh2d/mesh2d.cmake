@@ -17,3 +17,13 @@ add_test(NAME mesh2d_beam_gmsh_equilibrium
                  ${CMAKE_CURRENT_SOURCE_DIR}/plane/check_plane.py history r2_sum_beam_xmin=0.011:1e-9)
 set_tests_properties(mesh2d_beam_inp mesh2d_beam_gmsh mesh2d_beam_gmsh_equilibrium
                      PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# Patch test on the gmsh plane mesh of the reader's unit tests (PLANE4 on its quadrilaterals,
+# PLANE3 on its triangles): the interior nodes follow the linear field imposed on the boundary,
+# u = 1e-3 (x + y/2), v = 1e-3 (y + x/2) at the file's coordinates, to 1e-9 (measured 1e-14).
+add_test(NAME mesh2d_patch_gmsh
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${mesh2d_dir}/patch_gmsh.dck
+                 ${CMAKE_CURRENT_SOURCE_DIR}/plane/check_plane.py history
+                 u1_n13=0.001249999999999346:1e-9 u2_n13=0.000999999999998692:1e-9
+                 u1_n14=0.0007500000000005637:1e-9 u2_n14=0.0007500000000005637:1e-9
+                 u1_n15=0.001749999999999346:1e-9 u2_n15=0.0012499999999986923:1e-9)
+set_tests_properties(mesh2d_patch_gmsh PROPERTIES LABELS regression TIMEOUT ${scaled_60})
