@@ -100,23 +100,29 @@ module frix_contact_pass
 contains
 
    !> The slave nodes of a surface (in node order) and their tributary areas A_s: the
-   !> reference-face integrals of N_a (face_area_weights) summed over the faces at each node.
-   subroutine set_slave_nodes(mesh, surface, pass)
+   !> reference-face integrals of N_a (face_area_weights, or `face_weights(:, k)` of face k when
+   !> given: the edges of plane elements, element_t%face_weights) summed over the faces at each
+   !> node.
+   subroutine set_slave_nodes(mesh, surface, pass, face_weights)
       type(mesh_t), intent(in) :: mesh
       type(surface_t), intent(in) :: surface
       type(contact_pass_t), intent(inout) :: pass
-      integer, allocatable :: position_of(:)
+      real(dp), intent(in), optional :: face_weights(:, :)   !! (face nodes, faces)
+      integer, allocatable :: position_of(:), face_nodes(:)
       real(dp), allocatable :: node_area(:)
-      real(dp) :: coords(3, 4), weights(4)
-      integer :: k, a, node, n_slave, face_nodes(4)
+      real(dp) :: weights(4)
+      integer :: k, a, node, n_slave
       allocate (position_of(mesh%n_nodes), source=0)
       allocate (node_area(mesh%n_nodes), source=0.0_dp)
       n_slave = 0
       do k = 1, size(surface%elements)
          face_nodes = mesh%face_nodes(surface%elements(k), surface%faces(k))
-         coords = mesh%coords(:, face_nodes)
-         call face_area_weights(coords, weights)
-         do a = 1, 4
+         if (present(face_weights)) then
+            weights(1:size(face_nodes)) = face_weights(1:size(face_nodes), k)
+         else
+            call face_area_weights(mesh%coords(:, face_nodes), weights)
+         end if
+         do a = 1, size(face_nodes)
             node = face_nodes(a)
             if (position_of(node) == 0) then
                n_slave = n_slave + 1

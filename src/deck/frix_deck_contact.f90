@@ -166,7 +166,7 @@ contains
       logical, intent(inout) :: ok
       character(len=*), intent(in), optional :: head   !! the line's first keyword (default PAIR)
       character(len=:), allocatable :: name, what
-      integer :: k
+      integer :: k, slave_position
       what = 'contact'   ! what a surface of other faces than HEX8's cannot carry yet
       if (present(head)) then
          call reader%expect_keyword(line, position, head, ok)
@@ -189,10 +189,9 @@ contains
          if (pair%slave_surface == 0) then
             if (.not. reader%mesh_failed) call reader%report(line, position - 1, 'unknown surface')
             ok = .false.
-         else
-            call reader%require_hex8_faces(line, position - 1, model%mesh, pair%slave_surface, what, ok)
          end if
       end if
+      slave_position = position - 1
       call reader%expect_keyword(line, position, 'MASTER', ok)
       call reader%take_word(line, position, 'a master surface name or RIGID_PLANE', name, ok)
       pair%master_surface = 0
@@ -208,7 +207,19 @@ contains
             call reader%require_hex8_faces(line, position - 1, model%mesh, pair%master_surface, what, ok)
          end if
       end if
+      ! the edges of plane elements against a rigid line (RIGID_PLANE with a normal in the x-y plane)
+      if (pair%slave_surface /= 0 .and. .not. (pair%master_surface == 0 .and. plane_surface(model, pair%slave_surface))) &
+         call reader%require_hex8_faces(line, slave_position, model%mesh, pair%slave_surface, what, ok)
    end subroutine read_pair_surfaces
+
+   !> Whether the faces of surface `surface` are edges of plane elements.
+   logical function plane_surface(model, surface)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: surface
+      plane_surface = .false.
+      if (size(model%mesh%surfaces(surface)%elements) == 0) return
+      plane_surface = model%mesh%cell_dimension(model%mesh%surfaces(surface)%elements(1)) == 2
+   end function plane_surface
 
    !> The keywords after the surfaces, in any order: the rigid plane, the laws, their
    !> properties (as the registries describe them), GAPTOL, PASSES, NORMALS, FEATURE_ANGLE.
@@ -644,6 +655,11 @@ contains
       real(dp) :: stiffness, eps_n
       integer :: softer
       character(len=:), allocatable :: derived, note
+      if (plane_surface(model, pair%slave_surface)) then
+         call reader%report(reader%lines(pair%line), 1, 'automatic penalties are derived for the faces of solids '// &
+                            'only: give EPSN and EPST for the edges of plane elements')
+         return
+      end if
       call softer_surface(model, pair, softer, stiffness)
       if (.not. (stiffness > 0.0_dp .and. pair%penalty_factor*stiffness < huge(1.0_dp))) then
          call reader%report(reader%lines(pair%line), 1, 'cannot derive the automatic penalty: M/h of surface '// &

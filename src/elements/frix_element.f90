@@ -11,6 +11,7 @@ module frix_element
    use frix_material, only: material_t
    use frix_reference_cell, only: reference_cell_t
    use frix_surface_load, only: pressure_load
+   use frix_vector_algebra, only: cross_product
    implicit none
    private
 
@@ -43,6 +44,11 @@ module frix_element
       !> .false. for a solid; an axisymmetric element resists u_r (its hoop strain u_r / r).
       !> The deck's support check (frix_deck_supports) asks.
       procedure :: resists_translation => element_resists_translation
+      !> Tributary measures of one face's nodes, integral of N_a dA0 over the reference face
+      !> (area unit; the contact slave nodes' areas): by default over a 2D face cell,
+      !> |x_,xi x x_,eta| on the cell's rule; a plane element integrates over its edge with its
+      !> thickness or 2 pi r.
+      procedure :: face_weights => element_face_weights
    end type element_t
 
    type :: element_slot_t
@@ -121,6 +127,22 @@ contains
          call pressure_load(face, coords, u, pressure, follower, force)
       end if
    end subroutine element_face_pressure
+
+   pure subroutine element_face_weights(self, face, coords, weights)
+      class(element_t), intent(in) :: self
+      class(reference_cell_t), intent(in) :: face   !! the face's cell (dimension 2)
+      real(dp), intent(in) :: coords(:, :)    !! (3, face nodes) reference coordinates
+      real(dp), intent(out) :: weights(:)     !! (face nodes) integral of N_a dA0
+      real(dp) :: shape(face%n_nodes), derivatives(2, face%n_nodes)
+      integer :: point
+      weights(1:face%n_nodes) = 0.0_dp
+      do point = 1, face%n_points()
+         call face%shape_functions(face%points(:, point), shape, derivatives)
+         weights(1:face%n_nodes) = weights(1:face%n_nodes) + face%weights(point)*shape* &
+                                   norm2(cross_product(matmul(coords(:, 1:face%n_nodes), derivatives(1, :)), &
+                                                       matmul(coords(:, 1:face%n_nodes), derivatives(2, :))))
+      end do
+   end subroutine element_face_weights
 
    pure logical function element_resists_translation(self, direction)
       class(element_t), intent(in) :: self

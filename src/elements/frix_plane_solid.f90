@@ -61,6 +61,7 @@ module frix_plane_solid
       procedure :: point_positions => plane_solid_point_positions
       procedure :: face_pressure => plane_solid_face_pressure
       procedure :: resists_translation => plane_solid_resists_translation
+      procedure :: face_weights => plane_solid_face_weights
    end type plane_solid_t
 
    !> The reference geometry of the element at its points.
@@ -333,5 +334,24 @@ contains
       integer, intent(in) :: direction
       plane_solid_resists_translation = self%axisymmetric .and. direction == 1
    end function plane_solid_resists_translation
+
+   !> Tributary measures of an edge's nodes: integral of N_a m ds over the reference edge with
+   !> the section measure m = t (plane strain) or 2 pi r (axisymmetric), on the edge cell's rule
+   !> (exact for a straight edge: degree 1 in plane strain, 2 in axisymmetry).
+   pure subroutine plane_solid_face_weights(self, face, coords, weights)
+      class(plane_solid_t), intent(in) :: self
+      class(reference_cell_t), intent(in) :: face   !! the edge's cell (LINE2)
+      real(dp), intent(in) :: coords(:, :)    !! (3, edge nodes) reference coordinates
+      real(dp), intent(out) :: weights(:)     !! (edge nodes) integral of N_a m ds
+      real(dp) :: shape(face%n_nodes), derivatives(1, face%n_nodes), tangent(2)
+      integer :: point
+      weights(1:face%n_nodes) = 0.0_dp
+      do point = 1, face%n_points()
+         call face%shape_functions(face%points(:, point), shape, derivatives)
+         tangent = matmul(coords(1:2, 1:face%n_nodes), derivatives(1, :))
+         weights(1:face%n_nodes) = weights(1:face%n_nodes) + face%weights(point)*shape*norm2(tangent)* &
+                                   section_measure(self, dot_product(shape, coords(1, 1:face%n_nodes)))
+      end do
+   end subroutine plane_solid_face_weights
 
 end module frix_plane_solid

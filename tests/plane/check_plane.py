@@ -11,6 +11,10 @@
       The history CSV's row at pseudo time TIME (default: the last row): each column within
       the relative tolerance of its reference (the reference's source is given where the test
       is registered).
+  check_plane.py OUT BASE s1
+      S1 in plane strain (s1_plane.dck): at every load level of step 2 (p = 300 (t - 1)) the
+      free end's u_x (u1_n31) within the 6 % of benchmark S1 of Hird & Russell's solution
+      (postproc/s1_analytical.py) and below it (the 1D theory ignores the shear lag over H).
 
 OUT is the run's output folder, BASE the deck's name (files OUT/BASE.h5, OUT/BASE_history.csv).
 Exit 0 if every check holds.
@@ -90,6 +94,25 @@ def check_history(args):
     return 1 if failed else 0
 
 
+def check_s1(args):
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "postproc"))
+    import s1_analytical
+    theory = s1_analytical.Theory()
+    with open(pathlib.Path(args.out) / f"{args.base}_history.csv") as f:
+        rows = [r for r in csv.DictReader(row for row in f if not row.startswith("#")) if r["step"] == "2"]
+    failed = 0
+    for row in rows:
+        load = 300.0 * (float(row["time"]) - 1.0)
+        exact = -float(theory.displacement(load, theory.length))
+        value = float(row["u1_n31"])
+        error = (value - exact) / abs(exact)
+        ok = abs(error) <= 0.06 and abs(value) <= abs(exact)
+        failed += not ok
+        print(f"p = {load:6.1f}: free end u_x {value:.6e}, Hird & Russell {exact:.6e}, {100 * error:+.2f} % "
+              f"{'ok' if ok else 'FAIL'}")
+    return 1 if failed or len(rows) != 6 else 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out")
@@ -102,8 +125,9 @@ def main():
     patch.add_argument("--poisson", type=float, required=True)
     patch.add_argument("--axisymmetric", action="store_true")
     history.add_argument("checks", nargs="+", metavar="COLUMN[@TIME]=REFERENCE:TOLERANCE")
+    sub.add_parser("s1")
     args = parser.parse_args()
-    return check_patch(args) if args.what == "patch" else check_history(args)
+    return {"patch": check_patch, "history": check_history, "s1": check_s1}[args.what](args)
 
 
 if __name__ == "__main__":

@@ -36,6 +36,15 @@ add_test(NAME plane_s6a_axisymmetric
          COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/s6a_axisym.dck ${plane_check} history
                  u1_n1@1=1.661977672e-4:1e-3 u1_n5@1=1.639279950e-4:1e-3 u1_n1@2=4.674524e-3:1e-3 u1_n5@2=4.541972e-3:1e-3)
 set_tests_properties(plane_s6a_axisymmetric PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
+# S1 in plane strain on a rigid line (RIGID_PLANE with a normal in the x-y plane): against the
+# plain HEX8 slab with u_z = 0 on the same nodes (same numbers) and against Hird & Russell.
+add_test(NAME plane_s1_against_slab
+         COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/s1_plane.dck ${plane_dir}/s1_slab.dck
+                 1e-9 u1_n31 u2_n31 u1_n16 r1_sum_block_xmin)
+add_test(NAME plane_s1_hird_russell
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/s1_plane.dck ${plane_check} s1)
+set_tests_properties(plane_s1_against_slab plane_s1_hird_russell PROPERTIES LABELS "regression;contact"
+                     TIMEOUT ${scaled_60})
 # Restart of a plastic, total Lagrangian axisymmetric run from 1.2 and 1.3: the final state
 # bit for bit the uninterrupted run's (tests/restart/restart_test.sh).
 add_test(NAME restart_axisym COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
