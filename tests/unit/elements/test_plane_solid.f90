@@ -583,8 +583,8 @@ contains
    !> field sigma_xx = k y (all other stresses 0) is u = a x y, v = -(a x^2 + b y^2)/2 with
    !> a = (1 - nu^2) k / E, b = nu (1 + nu) k / E. Given its nodal values, EAS4 recovers the
    !> exact stress at every point (the modes E12 ~ xi and E22 ~ eta carry the parasitic shear and
-   !> the Poisson strain the bilinear field lacks: Simo & Rifai 1990, the element equals Wilson's
-   !> incompatible modes on a parallelogram), which the plain element does not (shear a x).
+   !> the Poisson strain the bilinear field lacks, as the incompatible modes x^2, y^2 of Wilson's
+   !> element would), which the plain element does not (shear a x).
    subroutine test_eas_bending(error)
       type(error_t), allocatable, intent(out) :: error
       real(dp), parameter :: k = 1.0_dp
