@@ -64,3 +64,10 @@ add_test(NAME plane_tube_axisymmetric_plastic_eas4
 set_tests_properties(plane_cook_eas4 plane_cook_eas4_against_slab plane_ring_plastic_eas4
                      plane_tube_axisymmetric_plastic_eas4
                      PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
+# The EAS option of the plane shapes: a count other than 0 or 4 on a quadrilateral, and any
+# count but 0 on a triangle, are errors naming the deck line and the valid counts.
+foreach(name error_plane4_eas3 error_axisym3_eas4)
+  add_test(NAME plane_${name}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/errors/check_error_case.sh ${FRIX_BIN} ${plane_dir}/${name}.dck)
+  set_tests_properties(plane_${name} PROPERTIES LABELS errors)
+endforeach()
