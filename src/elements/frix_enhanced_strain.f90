@@ -222,7 +222,9 @@ contains
                   all(abs(point%residual(1:n)) <= plateau_tolerance*point%floor_scale(1:n))
    end function local_converged
 
-   !> Strains, material response, h and its scales at alpha (all points).
+   !> Strains, material response, h and its scales at alpha (all points). The enhanced
+   !> equations weigh S, or S - S0 from an initial stress S0 (module header: the initial stress
+   !> is an assumed stress field of the Hu-Washizu functional, which drives no enhanced strain).
    subroutine evaluate_local(name, material, problem, alpha, state_old, state_new, point, error)
       character(len=*), intent(in) :: name
       class(material_t), intent(in) :: material
@@ -230,16 +232,17 @@ contains
       real(dp), intent(in) :: alpha(:)
       real(dp), intent(in) :: state_old(:, :)
       real(dp), intent(inout) :: state_new(:, :)
-      type(local_point_t), intent(out) :: point
+      type(local_point_t), intent(inout) :: point   !! its arrays allocated here on first use
       type(error_t), allocatable, intent(out) :: error
-      integer :: g, n, p
+      real(dp) :: weighed(6, size(problem%volume))
+      integer :: n, p
       n = problem%n
       p = size(problem%volume)
-      allocate (point%total(6, p), point%pk2(6, p), point%moduli(6, 6, p))
-      allocate (point%residual(n), point%scale(n), point%floor_scale(n))
-      do g = 1, p
-         point%total(:, g) = problem%compatible(:, g) + matmul(problem%enhanced(:, 1:n, g), alpha(1:n))
-      end do
+      if (.not. allocated(point%total)) then
+         allocate (point%total(6, p), point%pk2(6, p), point%moduli(6, 6, p))
+         allocate (point%residual(n), point%scale(n), point%floor_scale(n))
+      end if
+      call enhanced_strains(n, p, problem%enhanced, problem%compatible, alpha, point%total)
       if (problem%prestressed) then
          call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
                             point%moduli, error, problem%initial)
@@ -248,33 +251,40 @@ contains
                             point%moduli, error)
       end if
       if (allocated(error)) return
-      point%residual(1:n) = 0.0_dp
-      point%scale(1:n) = 0.0_dp
-      point%floor_scale(1:n) = 0.0_dp
-      do g = 1, p
-         point%residual(1:n) = point%residual(1:n) + &
-                               problem%volume(g)*matmul(enhanced_stress(problem, point, g), problem%enhanced(:, 1:n, g))
-         point%scale(1:n) = point%scale(1:n) + problem%volume(g)*maxval(abs(point%pk2(:, g)))* &
-                            sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
-         point%floor_scale(1:n) = point%floor_scale(1:n) + problem%volume(g)*stress_floor* &
-                                  maxval(abs(point%moduli(:, :, g)))*sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
-      end do
+      weighed = point%pk2
+      if (problem%prestressed) weighed = point%pk2 - problem%initial
+      call residual_sums(n, p, problem%enhanced, problem%volume, weighed, point%pk2, point%moduli, point%residual, &
+                         point%scale, point%floor_scale)
    end subroutine evaluate_local
 
-   !> The stress the enhanced equations h = sum_g G^T S dV = 0 weigh at point g: S, or S - S0
-   !> from an initial stress S0 (module header: the initial stress is an assumed stress field of
-   !> the Hu-Washizu functional, which drives no enhanced strain).
-   pure function enhanced_stress(problem, point, g) result(stress)
-      type(local_problem_t), intent(in) :: problem
-      type(local_point_t), intent(in) :: point
-      integer, intent(in) :: g
-      real(dp) :: stress(6)
-      if (problem%prestressed) then
-         stress = point%pk2(:, g) - problem%initial(:, g)
-      else
-         stress = point%pk2(:, g)
-      end if
-   end function enhanced_stress
+   !> E_g = E(u)_g + G_g alpha at every point.
+   pure subroutine enhanced_strains(n, p, enhanced, compatible, alpha, total)
+      integer, intent(in) :: n, p
+      real(dp), intent(in) :: enhanced(6, n, p), compatible(6, p), alpha(n)
+      real(dp), intent(out) :: total(6, p)
+      integer :: g
+      do g = 1, p
+         total(:, g) = compatible(:, g) + matmul(enhanced(:, 1:n, g), alpha(1:n))
+      end do
+   end subroutine enhanced_strains
+
+   !> h = sum_g G^T weighed_g dV, its scales sum_g |G_g| max|S_g| dV and sum_g |G_g|
+   !> stress_floor max|C_g| dV (local_converged).
+   pure subroutine residual_sums(n, p, enhanced, volume, weighed, pk2, moduli, residual, scale, floor_scale)
+      integer, intent(in) :: n, p
+      real(dp), intent(in) :: enhanced(6, n, p), volume(p), weighed(6, p), pk2(6, p), moduli(6, 6, p)
+      real(dp), intent(out) :: residual(n), scale(n), floor_scale(n)
+      integer :: g
+      residual(1:n) = 0.0_dp
+      scale(1:n) = 0.0_dp
+      floor_scale(1:n) = 0.0_dp
+      do g = 1, p
+         residual(1:n) = residual(1:n) + volume(g)*matmul(weighed(:, g), enhanced(:, 1:n, g))
+         scale(1:n) = scale(1:n) + volume(g)*maxval(abs(pk2(:, g)))*sum(abs(enhanced(:, 1:n, g)), dim=1)
+         floor_scale(1:n) = floor_scale(1:n) + volume(g)*stress_floor*maxval(abs(moduli(:, :, g)))* &
+                            sum(abs(enhanced(:, 1:n, g)), dim=1)
+      end do
+   end subroutine residual_sums
 
    !> alpha <- alpha + s d along the Newton direction d = -K_aa^{-1} h. With the slope
    !> phi(s) = d . h(alpha + s d), phi(0) = -d . K_aa d, which is negative where K_aa is
@@ -342,7 +352,7 @@ contains
       real(dp), intent(in) :: alpha(:)
       real(dp), intent(in) :: state_old(:, :)
       real(dp), intent(inout) :: state_new(:, :)
-      type(local_point_t), intent(out) :: trial
+      type(local_point_t), intent(inout) :: trial
       logical, intent(out) :: failed
       type(error_t), allocatable :: trial_error
       call evaluate_local(name, material, problem, alpha, state_old, state_new, trial, trial_error)
@@ -428,16 +438,22 @@ contains
       type(local_problem_t), intent(in) :: problem
       real(dp), intent(in) :: moduli(:, :, :)   !! (6, 6, p)
       real(dp), intent(out) :: stiffness(:, :)
-      real(dp) :: weighted(6, problem%n)
-      integer :: g, n
-      n = problem%n
-      stiffness(1:n, 1:n) = 0.0_dp
-      do g = 1, size(problem%volume)
-         weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
-         stiffness(1:n, 1:n) = stiffness(1:n, 1:n) + matmul(transpose(problem%enhanced(:, 1:n, g)), &
-                                                           weighted(:, 1:n))
-      end do
+      call stiffness_sum(problem%n, size(problem%volume), problem%enhanced, problem%volume, moduli, stiffness)
    end subroutine enhanced_stiffness
+
+   !> enhanced_stiffness over explicit-shape arrays (the compiler sees their leading extents).
+   pure subroutine stiffness_sum(n, p, enhanced, volume, moduli, stiffness)
+      integer, intent(in) :: n, p
+      real(dp), intent(in) :: enhanced(6, n, p), volume(p), moduli(6, 6, p)
+      real(dp), intent(inout) :: stiffness(:, :)
+      real(dp) :: weighted(6, n)
+      integer :: g
+      stiffness(1:n, 1:n) = 0.0_dp
+      do g = 1, p
+         weighted(:, 1:n) = volume(g)*matmul(moduli(:, :, g), enhanced(:, 1:n, g))
+         stiffness(1:n, 1:n) = stiffness(1:n, 1:n) + matmul(transpose(enhanced(:, 1:n, g)), weighted(:, 1:n))
+      end do
+   end subroutine stiffness_sum
 
    !> Solve K_aa X = B (B <- X), K_aa = sum_g G^T C G dV from the points' moduli C
    !> (solve_scaled). Where K_aa is singular (solve_scaled's pivot test) the system is solved
@@ -503,24 +519,12 @@ contains
       real(dp), intent(inout) :: tangent(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: coupling(3*size(b_blocks, 3), problem%n), solved(problem%n, 3*size(b_blocks, 3))
-      real(dp) :: weighted(6, problem%n)
-      integer :: g, a, n, m
+      integer :: n, m
       logical :: singular
       n = problem%n
       m = 3*size(b_blocks, 3)
-      coupling(:, 1:n) = 0.0_dp
-      solved(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
-      do g = 1, size(problem%volume)
-         weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
-         do a = 1, size(b_blocks, 3)
-            coupling(3*a - 2:3*a, 1:n) = coupling(3*a - 2:3*a, 1:n) + &
-                                         matmul(transpose(b_blocks(:, :, a, g)), weighted(:, 1:n))
-            if (.not. symmetric) solved(1:n, 3*a - 2:3*a) = solved(1:n, 3*a - 2:3*a) + &
-                                 problem%volume(g)*matmul(transpose(problem%enhanced(:, 1:n, g)), &
-                                                          matmul(moduli(:, :, g), b_blocks(:, :, a, g)))
-         end do
-      end do
-      if (symmetric) solved(1:n, :) = transpose(coupling(:, 1:n))
+      call coupling_sums(n, size(b_blocks, 3), size(problem%volume), problem%enhanced, problem%volume, b_blocks, &
+                         moduli, symmetric, coupling, solved)
       call solve_enhanced_system(problem, moduli, merge(condensation_regularisation, local_regularisation, symmetric), &
                                  solved(1:n, :), singular)
       if (singular) then
@@ -529,5 +533,27 @@ contains
       end if
       tangent(1:m, 1:m) = tangent(1:m, 1:m) - matmul(coupling(:, 1:n), solved(1:n, :))
    end subroutine condense
+
+   !> K_ua = sum_g B^T C G dV and K_au (sum_g G^T C B dV, or K_ua^T for a symmetric C) over
+   !> explicit-shape arrays.
+   pure subroutine coupling_sums(n, nodes, p, enhanced, volume, b_blocks, moduli, symmetric, coupling, transposed)
+      integer, intent(in) :: n, nodes, p
+      real(dp), intent(in) :: enhanced(6, n, p), volume(p), b_blocks(6, 3, nodes, p), moduli(6, 6, p)
+      logical, intent(in) :: symmetric
+      real(dp), intent(out) :: coupling(3*nodes, n), transposed(n, 3*nodes)
+      real(dp) :: weighted(6, n)
+      integer :: g, a
+      coupling(:, 1:n) = 0.0_dp
+      transposed(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
+      do g = 1, p
+         weighted(:, 1:n) = volume(g)*matmul(moduli(:, :, g), enhanced(:, 1:n, g))
+         do a = 1, nodes
+            coupling(3*a - 2:3*a, 1:n) = coupling(3*a - 2:3*a, 1:n) + matmul(transpose(b_blocks(:, :, a, g)), weighted(:, 1:n))
+            if (.not. symmetric) transposed(1:n, 3*a - 2:3*a) = transposed(1:n, 3*a - 2:3*a) + &
+                                 volume(g)*matmul(transpose(enhanced(:, 1:n, g)), matmul(moduli(:, :, g), b_blocks(:, :, a, g)))
+         end do
+      end do
+      if (symmetric) transposed(1:n, :) = transpose(coupling(:, 1:n))
+   end subroutine coupling_sums
 
 end module frix_enhanced_strain
