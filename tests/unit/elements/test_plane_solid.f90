@@ -67,7 +67,8 @@ contains
                new_unittest('EAS4 tangent, elastic and plastic, alpha re-solved', test_eas_tangent), &
                new_unittest('EAS4 patch: constant strain, alpha = 0, exact stress', test_eas_patch), &
                new_unittest('EAS4 pure bending of a rectangle exact', test_eas_bending), &
-               new_unittest('EAS options of the registry', test_eas_registry)]
+               new_unittest('EAS options of the registry', test_eas_registry), &
+               new_unittest('EAS4 at rest under a geostatic initial stress: alpha = 0', test_eas_initial_stress)]
    end subroutine collect_plane_solid
 
    !> The element on QUAD4 (`quad`) or TRI3, axisymmetric or plane strain of thickness 0.7.
@@ -650,5 +651,39 @@ contains
       call check(error, index(create_error%message, 'unsupported number of EAS parameters 3 (valid: 0, 4)') > 0, &
                  'message: '//create_error%message)
    end subroutine test_eas_registry
+
+   !> A geostatic initial stress varying with depth, sigma0 = -gamma (10 - y) (K0, 1, K0, 0, 0,
+   !> 0) (gamma = 18, K0 = 0.5), at u = 0, Hooke: the enhanced equations weigh S - S0 = 0, so the
+   !> local solve from alpha = 1e-3 returns alpha = 0 and the plain element's fint (plane strain
+   !> and axisymmetric, both kinematics).
+   subroutine test_eas_initial_stress(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(plane_solid_t) :: plain, element
+      real(dp) :: initial(6, 4), positions(3, 4), u(3, 4), fint(12), plain_fint(12), alpha(4), none(0)
+      real(dp) :: state_old(0, 4), state_new(0, 4)
+      integer :: g, k, kinematics
+      u = 0.0_dp
+      do k = 0, 1
+         do kinematics = kinematics_linear, kinematics_total_lagrangian
+            element = enhanced(k == 1, kinematics)
+            plain = plane(.true., k == 1, kinematics)
+            call element%point_positions(quad_coords, positions)
+            do g = 1, 4
+               initial(:, g) = -18.0_dp*(10.0_dp - positions(2, g))*[0.5_dp, 1.0_dp, 0.5_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+            end do
+            alpha = 1.0e-3_dp
+            call element%evaluate(new_linear_elastic(young, poisson, 0.0_dp), quad_coords, u, alpha, state_old, &
+                                  state_new, fint, error=error, initial_stress=initial)
+            if (allocated(error)) return
+            call plain%evaluate(new_linear_elastic(young, poisson, 0.0_dp), quad_coords, u, none, state_old, &
+                                state_new, plain_fint, error=error, initial_stress=initial)
+            if (allocated(error)) return
+            call check(error, maxval(abs(alpha)) <= tight .and. maxval(abs(fint - plain_fint)) <= &
+                       tight*maxval(abs(plain_fint)), element%name//': alpha '//to_string(maxval(abs(alpha)))// &
+                       ', fint off by '//to_string(maxval(abs(fint - plain_fint))))
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_eas_initial_stress
 
 end module test_plane_solid
