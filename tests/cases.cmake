@@ -283,3 +283,6 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/pipe_soil/pipe_soil.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc.cmake)
 # Plane strain and axisymmetric elements (tests/plane).
 include(${CMAKE_CURRENT_SOURCE_DIR}/plane/plane.cmake)
+
+# Plane meshes read from gmsh and .inp files (tests/mesh2d/README.md).
+include(${CMAKE_CURRENT_SOURCE_DIR}/mesh2d/mesh2d.cmake)

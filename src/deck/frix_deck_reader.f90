@@ -14,6 +14,7 @@
 !> Each section has its reader in a module of its own (frix_deck_controls, _properties, _mesh,
 !> _loads, _initial_stress, _contact, _couplings, _results).
 module frix_deck_reader
+   use frix_kinds, only: dp
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_mesh_checks, only: check_element_jacobians, find_orphan_nodes
@@ -183,6 +184,7 @@ contains
                               'numbers (coordinates too large)')
          call report_elements(reader, model, other_dimension(model), 'is a plane element among solids or a '// &
                               'solid among plane elements (a model is either plane or three-dimensional)')
+         call check_plane_z_conditions(reader, model)
       end if
 
       if (model%mesh%n_nodes > 0 .and. .not. reader%mesh_failed) then
@@ -199,6 +201,28 @@ contains
          end do
       end if
    end subroutine validate_model
+
+   !> A Dirichlet condition that prescribes a z displacement other than 0 on a node of plane
+   !> elements (whose z is held at 0): an error at the condition's line.
+   subroutine check_plane_z_conditions(reader, model)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      logical, allocatable :: plane_node(:)
+      integer :: i, e
+      allocate (plane_node(model%mesh%n_nodes), source=.false.)
+      do e = 1, model%mesh%n_elements
+         if (model%mesh%cell_dimension(e) == 2) plane_node(model%mesh%element_nodes(e)) = .true.
+      end do
+      if (.not. any(plane_node) .or. .not. allocated(model%dirichlet)) return
+      do i = 1, size(model%dirichlet)
+         associate (condition => model%dirichlet(i))
+            if (condition%component /= 3 .or. condition%value == 0.0_dp .or. condition%line == 0) cycle
+            if (.not. any(plane_node(condition%nodes))) cycle
+            call reader%diagnostics%at_line(reader%lines(condition%line), 1, 'a z displacement '// &
+                                            'prescribed on the nodes of plane elements, which move in x and y only')
+         end associate
+      end do
+   end subroutine check_plane_z_conditions
 
    !> The elements whose cell's dimension differs from the first element's.
    function other_dimension(model) result(elements)

@@ -7,7 +7,7 @@
 module frix_gmsh_context
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
-   use frix_strings, only: to_string
+   use frix_strings, only: to_string, scientific
    use frix_text_scanner, only: text_scanner_t
    use frix_id_map, only: id_map_t
    use frix_hex8_cell, only: hex8_gmsh_type
@@ -20,6 +20,7 @@ module frix_gmsh_context
    private
 
    public :: gmsh_quadrangle, gmsh_hexahedron, gmsh_triangle, gmsh_tetrahedron, is_volume_cell, is_surface_cell
+   public :: gmsh_line, is_element_cell, is_boundary_cell, first_off_plane, off_plane_message
    public :: integer_list_t, push, reserve, name_t, raw_mesh_t
    public :: claim_section, skip_section, next_data_line, expect_section_end
    public :: read_count, read_count_line, check_room
@@ -31,6 +32,9 @@ module frix_gmsh_context
    integer, parameter :: gmsh_quadrangle = quad4_gmsh_type, gmsh_hexahedron = hex8_gmsh_type
    integer, parameter :: gmsh_triangle = tri3_gmsh_type, gmsh_tetrahedron = tet4_gmsh_type
    integer, parameter :: gmsh_tetrahedron10 = tet10_gmsh_type, gmsh_triangle6 = tri6_gmsh_type
+   !> The 2-node line (gmsh type 1), the edge of a plane cell: matched to an element edge, not a
+   !> cell of the mesh.
+   integer, parameter :: gmsh_line = 1
 
    !> A growable list of default integers.
    type :: integer_list_t
@@ -47,9 +51,10 @@ module frix_gmsh_context
       integer :: version = 0                     !! 2 (format 2.2) or 4 (format 4.1)
       ! nodes
       integer :: n_nodes = 0
-      integer, allocatable :: node_ids(:), node_lines(:)
+      integer, allocatable :: node_ids(:), node_lines(:)   !! line of the node's id
+      integer, allocatable :: coordinate_lines(:)          !! line of its coordinates (4.1: not the id's)
       real(dp), allocatable :: coords(:, :)
-      ! element records kept: hexahedra, and elements of physical groups
+      ! element records kept: volume cells, quadrilaterals and triangles, and elements of physical groups
       type(integer_list_t) :: record_ids, record_types, record_lines
       type(integer_list_t) :: record_node_first   !! record r: nodes(first(r):first(r+1)-1)
       type(integer_list_t) :: record_nodes        !! user node ids
@@ -84,6 +89,64 @@ contains
       is_surface_cell = element_type == gmsh_quadrangle .or. element_type == gmsh_triangle .or. &
                         element_type == gmsh_triangle6
    end function is_surface_cell
+
+   !> Whether gmsh element type `element_type` gives an element of a mesh of dimension `dim`:
+   !> a volume cell (3), or a 4-node quadrilateral or 3-node triangle (2: a plane mesh, QUAD4
+   !> and TRI3 cells, the cells of the plane strain and axisymmetric elements).
+   pure logical function is_element_cell(element_type, dim)
+      integer, intent(in) :: element_type, dim
+      select case (dim)
+      case (3)
+         is_element_cell = is_volume_cell(element_type)
+      case (2)
+         is_element_cell = element_type == gmsh_quadrangle .or. element_type == gmsh_triangle
+      case default
+         is_element_cell = .false.
+      end select
+   end function is_element_cell
+
+   !> Whether gmsh element type `element_type` is a boundary cell of a mesh of dimension `dim`
+   !> (one dimension lower, matched to the elements' faces): a face cell of a volume cell (3),
+   !> or a 2-node line, the edge of a plane cell (2).
+   pure logical function is_boundary_cell(element_type, dim)
+      integer, intent(in) :: element_type, dim
+      select case (dim)
+      case (3)
+         is_boundary_cell = is_surface_cell(element_type)
+      case (2)
+         is_boundary_cell = element_type == gmsh_line
+      case default
+         is_boundary_cell = .false.
+      end select
+   end function is_boundary_cell
+
+   !> The first of the nodes (`coords`, 3 x n) of a plane mesh that is not in the x-y plane,
+   !> 0 if none: |z| above plane_z_tolerance times the largest |x|, |y| of the nodes.
+   pure integer function first_off_plane(coords) result(first)
+      real(dp), intent(in) :: coords(:, :)
+      ! round-off (mesh generators write coordinates with 16 significant digits), not a third dimension
+      real(dp), parameter :: plane_z_tolerance = 1.0e-12_dp
+      real(dp) :: extent
+      integer :: i
+      first = 0
+      if (size(coords, 2) == 0) return
+      extent = maxval(abs(coords(1:2, :)))
+      do i = 1, size(coords, 2)
+         if (abs(coords(3, i)) > plane_z_tolerance*extent) then
+            first = i
+            return
+         end if
+      end do
+   end function first_off_plane
+
+   !> The message for node `id` of a plane mesh at height `z` (first_off_plane).
+   pure function off_plane_message(id, z) result(message)
+      integer, intent(in) :: id
+      real(dp), intent(in) :: z
+      character(len=:), allocatable :: message
+      message = 'node '//to_string(id)//' has z = '//scientific(z, 6)//': the mesh has plane elements (no volume '// &
+                'elements), whose nodes lie in the x-y plane (z = 0)'
+   end function off_plane_message
 
    ! ---- sections ---------------------------------------------------------------------------
 

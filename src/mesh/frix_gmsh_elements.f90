@@ -1,6 +1,7 @@
 !> The `$Elements` section of a gmsh .msh file, formats 2.2 and 4.1 (gmsh reference manual,
 !> "MSH file format", including its table of element types): the elements kept as records
-!> (every 8-node hexahedron, and every element of a physical group) with their node ids, their
+!> (every volume cell, 4-node quadrilateral and 3-node triangle, and every element of a physical
+!> group) with their node ids, their
 !> line (for messages) and their physical groups. A 2.2 element names its physical group in
 !> its first tag; a 4.1 element has those of its entity (`$Entities`). Other elements are
 !> skipped. The group table (`group_dims`, `group_tags`) is filled as groups are met.
@@ -8,7 +9,7 @@ module frix_gmsh_elements
    use frix_error, only: error_t
    use frix_strings, only: to_string
    use frix_text_scanner, only: text_scanner_t
-   use frix_gmsh_context, only: is_volume_cell, raw_mesh_t, push, reserve, next_data_line, &
+   use frix_gmsh_context, only: is_element_cell, raw_mesh_t, push, reserve, next_data_line, &
                                 expect_section_end, read_count, read_count_line, read_blocks_header, &
                                 read_block_start, read_block_count, check_blocks_total, read_positive_id, &
                                 read_physical_tag
@@ -34,7 +35,7 @@ contains
          if (allocated(error)) return
          call read_element_start_v2(scanner, id, element_type, physical, error)
          if (allocated(error)) return
-         if (physical == 0 .and. .not. is_volume_cell(element_type)) cycle
+         if (physical == 0 .and. .not. is_mesh_cell(element_type)) cycle
          call gmsh_type_info(element_type, n_nodes, dim)
          group = 0
          if (physical /= 0) then
@@ -130,7 +131,7 @@ contains
    end subroutine entity_groups
 
    !> The `block_count` element lines of a 4.1 block of dimension `dim`: kept if they are
-   !> hexahedra or the block's entity has physical `groups`.
+   !> cells of a mesh (is_mesh_cell) or the block's entity has physical `groups`.
    subroutine read_element_block(scanner, raw, dim, element_type, block_count, groups, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(raw_mesh_t), intent(inout) :: raw
@@ -147,7 +148,7 @@ contains
       do i = 1, block_count
          call next_data_line(scanner, '$Elements', error)
          if (allocated(error)) return
-         if (size(groups) == 0 .and. .not. is_volume_cell(element_type)) cycle
+         if (size(groups) == 0 .and. .not. is_mesh_cell(element_type)) cycle
          call read_positive_id(scanner, 'element', id, error)
          if (allocated(error)) return
          call add_record(scanner, raw, id, element_type, n_nodes, groups, error)
@@ -216,6 +217,13 @@ contains
          end do
       end if
    end subroutine read_record_nodes
+
+   !> Whether an element of type `element_type` is kept without a physical group: a cell of
+   !> a volume or of a plane mesh (gmsh writes every element when there is no physical group).
+   pure logical function is_mesh_cell(element_type)
+      integer, intent(in) :: element_type
+      is_mesh_cell = is_element_cell(element_type, 3) .or. is_element_cell(element_type, 2)
+   end function is_mesh_cell
 
    subroutine reserve_records(raw, count)
       type(raw_mesh_t), intent(inout) :: raw

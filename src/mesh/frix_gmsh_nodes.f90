@@ -1,7 +1,7 @@
 !> The `$Nodes` section of a gmsh .msh file, formats 2.2 and 4.1 (gmsh reference manual, "MSH
-!> file format"): every node in file order, with its id, its line (for messages) and its
-!> coordinates, which must be finite numbers. Parametric coordinates of 4.1 are read and
-!> dropped.
+!> file format"): every node in file order, with its id, the lines of its id and of its
+!> coordinates (for messages) and its coordinates, which must be finite numbers. Parametric
+!> coordinates of 4.1 are read and dropped.
 module frix_gmsh_nodes
    use frix_kinds, only: dp
    use frix_error, only: error_t
@@ -29,6 +29,7 @@ contains
       do i = 1, count
          call read_node_id(scanner, raw, i, error)
          if (allocated(error)) return
+         raw%coordinate_lines(i) = scanner%line_number
          call read_coordinates(scanner, raw%coords(:, i), 0, error)
          if (allocated(error)) return
       end do
@@ -81,6 +82,7 @@ contains
       do i = raw%n_nodes + 1, raw%n_nodes + block_count
          call next_data_line(scanner, '$Nodes', error)
          if (allocated(error)) return
+         raw%coordinate_lines(i) = scanner%line_number
          call read_coordinates(scanner, raw%coords(:, i), n_parametric, error)
          if (allocated(error)) return
       end do
@@ -103,7 +105,8 @@ contains
    subroutine allocate_nodes(raw, count)
       type(raw_mesh_t), intent(inout) :: raw
       integer, intent(in) :: count
-      allocate (raw%node_ids(count), raw%node_lines(count), raw%coords(3, count))
+      allocate (raw%node_ids(count), raw%node_lines(count), raw%coordinate_lines(count))
+      allocate (raw%coords(3, count))
    end subroutine allocate_nodes
 
    !> x y z of a node line, then `n_parametric` parametric coordinates (not kept), then

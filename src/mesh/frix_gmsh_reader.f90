@@ -3,12 +3,16 @@
 !>
 !> What becomes of the file's content:
 !> - every node, in file order (user ids kept in `node_ids`);
-!> - every 8-node hexahedron (gmsh type 5, whose node order is VTK's and frix_mesh's), in file
-!>   order (gmsh ids kept in `element_ids`; `element_block` is left 0 for the caller);
+!> - every volume cell (8-node hexahedron, gmsh type 5, whose node order is VTK's and
+!>   frix_mesh's; 4- and 10-node tetrahedra), in file order (gmsh ids kept in `element_ids`;
+!>   `element_block` is left 0 for the caller); in a file without volume elements (a plane
+!>   mesh, every node at z = 0), every 4-node quadrilateral and 3-node triangle instead;
 !> - every physical group, named from `$PhysicalNames` or, if unnamed, "<dim>:<tag>":
 !>   a physical volume gives an element set (its hexahedra) and a node set; a physical surface
 !>   gives a surface (each 4-node quadrilateral matched to the hexahedron face with the same
 !>   four nodes) and a node set; a physical curve or point gives a node set.
+!>   In a plane mesh, one dimension lower: a physical surface gives an element set, a
+!>   physical curve a surface (each 2-node line matched to the element edge with its nodes).
 !>   Sets are in ascending (dim, tag) order; their contents are sorted and unique. Two
 !>   groups with the same name (even of different dimensions) are an error, since each gives
 !>   a node set. A quadrilateral on a face shared by two hexahedra is an error too (a

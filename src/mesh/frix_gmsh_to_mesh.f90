@@ -1,12 +1,17 @@
-!> The content of a gmsh .msh file (`raw_mesh_t`, read by frix_gmsh_reader) made a `mesh_t`:
-!> the nodes (ids unique), the volume elements (8-node hexahedra, HEX8, 4-node tetrahedra, TET4,
-!> and 10-node tetrahedra, TET10, their nodes put in the cell's order) in file order (an
-!> element that format 2.2 writes once per physical volume kept once),
-!> and one node set per physical group, one element set per physical volume and one surface
-!> per physical surface (each quadrilateral or 3- or 6-node triangle matched to the boundary face of a
-!> volume element with the same nodes). Sets are in
-!> ascending (dim, tag) order and named from `$PhysicalNames`, else "<dim>:<tag>". Errors
-!> name the file and the line of the element or node concerned.
+!> The content of a gmsh .msh file (`raw_mesh_t`, read by frix_gmsh_reader) made a `mesh_t`.
+!> The mesh's dimension is the highest of its cells and physical groups: 3 with volume
+!> elements, 2 without (a plane mesh, in the x-y plane: every node's z must be 0).
+!> The elements are the cells of that dimension, in file order (an element that format 2.2
+!> writes once per physical group kept once): 8-node hexahedra, HEX8, 4-node tetrahedra,
+!> TET4, and 10-node tetrahedra, TET10 (their nodes put in the cell's order), in 3D;
+!> 4-node quadrilaterals, QUAD4, and 3-node triangles, TRI3, in 2D.
+!> One node set per physical group; one element set per physical group of the mesh's
+!> dimension (volume, or surface of a plane mesh), and one surface per physical group one
+!> dimension lower (a surface: each quadrilateral or 3- or 6-node triangle matched to the
+!> boundary face of a volume element with the same nodes; a curve of a plane mesh: each 2-node
+!> line matched to the boundary edge of a plane element). Sets are in ascending (dim, tag)
+!> order and named from `$PhysicalNames`, else "<dim>:<tag>". Errors name the file and the
+!> line of the element or node concerned.
 module frix_gmsh_to_mesh
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
@@ -15,7 +20,8 @@ module frix_gmsh_to_mesh
    use frix_cell_registry, only: cell_entry_t, cell_table, max_cell_nodes
    use frix_mesh_checks, only: node_to_elements
    use frix_mesh_selection, only: sort_nodes
-   use frix_gmsh_context, only: is_volume_cell, is_surface_cell, raw_mesh_t
+   use frix_gmsh_context, only: is_element_cell, is_boundary_cell, first_off_plane, off_plane_message, &
+                                raw_mesh_t
    implicit none
    private
 
@@ -23,7 +29,7 @@ module frix_gmsh_to_mesh
 
 contains
 
-   !> Turn the raw content into `mesh`: node numbering, hexahedra, sets and surfaces.
+   !> Turn the raw content into `mesh`: node numbering, elements, sets and surfaces.
    subroutine build_mesh(file_name, raw, mesh, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
@@ -31,20 +37,51 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(id_map_t) :: node_map
       integer, allocatable :: record_element(:), group_offsets(:), group_records(:)
+      integer :: element_dim
 
+      element_dim = mesh_dimension(raw)
       call number_nodes(file_name, raw, node_map, mesh, error)
       if (allocated(error)) return
-      call collect_volume_elements(file_name, raw, node_map, mesh, record_element, error)
+      if (element_dim == 2) call check_plane_nodes(file_name, raw, error)
+      if (allocated(error)) return
+      call collect_elements(file_name, raw, element_dim, node_map, mesh, record_element, error)
       if (allocated(error)) return
       call merge_copies(mesh, record_element)
       allocate (mesh%element_block(mesh%n_elements), source=0)
       call index_group_records(raw, group_offsets, group_records)
-      call check_group_types(file_name, raw, error)
+      call check_group_types(file_name, raw, element_dim, error)
       if (allocated(error)) return
       ! groups in ascending (dim, tag) order
-      call build_sets(file_name, raw, sorted_group_order(raw), group_offsets, group_records, record_element, &
-                      node_map, mesh, error)
+      call build_sets(file_name, raw, element_dim, sorted_group_order(raw), group_offsets, group_records, &
+                      record_element, node_map, mesh, error)
    end subroutine build_mesh
+
+   !> The dimension of the mesh: 3 if the file has a volume cell or a physical volume, else 2
+   !> if it has a plane cell (quadrilateral, triangle) or a physical surface; 3 for a file
+   !> with neither (no elements: node sets only).
+   integer function mesh_dimension(raw) result(dim)
+      type(raw_mesh_t), intent(in) :: raw
+      integer :: r
+      dim = 0
+      if (raw%group_dims%count > 0) dim = maxval(raw%group_dims%items(1:raw%group_dims%count))
+      do r = 1, raw%record_ids%count
+         if (is_element_cell(raw%record_types%items(r), 3)) dim = 3
+         if (is_element_cell(raw%record_types%items(r), 2)) dim = max(dim, 2)
+      end do
+      if (dim < 2) dim = 3
+   end function mesh_dimension
+
+   !> The nodes of a plane mesh lie in the x-y plane (first_off_plane): error naming the
+   !> coordinate line of the first that does not.
+   subroutine check_plane_nodes(file_name, raw, error)
+      character(len=*), intent(in) :: file_name
+      type(raw_mesh_t), intent(in) :: raw
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      i = first_off_plane(raw%coords(:, 1:raw%n_nodes))
+      if (i /= 0) call fatal_error(error, file_name//':'//to_string(raw%coordinate_lines(i))//': '// &
+                                   off_plane_message(raw%node_ids(i), raw%coords(3, i)))
+   end subroutine check_plane_nodes
 
    !> The nodes of the mesh, in file order; their ids must be unique.
    subroutine number_nodes(file_name, raw, node_map, mesh, error)
@@ -66,11 +103,13 @@ contains
       mesh%coords = raw%coords(:, 1:raw%n_nodes)
    end subroutine number_nodes
 
-   !> The volume elements, in file order; records with the same id must have the same nodes.
-   !> `record_element(r)` is the element of volume record r (0 for other records).
-   subroutine collect_volume_elements(file_name, raw, node_map, mesh, record_element, error)
+   !> The elements (the cells of dimension `element_dim`), in file order; records with the
+   !> same id must have the same nodes. `record_element(r)` is the element of record r (0 for
+   !> other records).
+   subroutine collect_elements(file_name, raw, element_dim, node_map, mesh, record_element, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
+      integer, intent(in) :: element_dim
       type(id_map_t), intent(in) :: node_map
       type(mesh_t), intent(inout) :: mesh
       integer, allocatable, intent(out) :: record_element(:)
@@ -78,19 +117,19 @@ contains
       type(id_map_t) :: element_map
       type(cell_entry_t), allocatable :: table(:)
       integer, allocatable :: nodes(:), cells(:), row(:), cell_of_type(:)
-      integer :: n_records, n_volume, r, element, existing, cell
+      integer :: n_records, n_cells, r, element, existing, cell
       table = cell_table()
       cell_of_type = cells_of_gmsh_types()
       n_records = raw%record_ids%count
-      n_volume = count([(is_volume_cell(raw%record_types%items(r)), r=1, n_records)])
+      n_cells = count([(is_element_cell(raw%record_types%items(r), element_dim), r=1, n_records)])
       ! rows for any cell, cut to the mesh's cells' at the end
-      allocate (mesh%connectivity(max_cell_nodes(), n_volume), mesh%element_ids(n_volume), record_element(n_records))
-      allocate (cells(n_volume), row(max_cell_nodes()))
+      allocate (mesh%connectivity(max_cell_nodes(), n_cells), mesh%element_ids(n_cells), record_element(n_records))
+      allocate (cells(n_cells), row(max_cell_nodes()))
       record_element = 0
-      call element_map%clear(n_volume)
+      call element_map%clear(n_cells)
       element = 0
       do r = 1, n_records
-         if (.not. is_volume_cell(raw%record_types%items(r))) cycle
+         if (.not. is_element_cell(raw%record_types%items(r), element_dim)) cycle
          call record_nodes(file_name, raw, r, node_map, nodes, error)
          if (allocated(error)) return
          cell = cell_of_type(raw%record_types%items(r))
@@ -118,7 +157,7 @@ contains
       mesh%connectivity = mesh%connectivity(1:connectivity_rows(cells(1:element)), 1:element)
       mesh%element_ids = mesh%element_ids(1:element)
       call mesh%set_cells(cells(1:element))
-   end subroutine collect_volume_elements
+   end subroutine collect_elements
 
    !> The index in the cell table of the cell of each gmsh element type code, 0 for a type
    !> without a cell, (largest code of a cell).
@@ -133,8 +172,8 @@ contains
       end do
    end function cells_of_gmsh_types
 
-   !> Format 2.2 writes a hexahedron once per physical volume holding it, each copy with an id
-   !> of its own (gmsh 4.8): keep the first of hexahedra with identical node lists, and point
+   !> Format 2.2 writes an element once per physical group holding it, each copy with an id
+   !> of its own (gmsh 4.8): keep the first of elements with identical node lists, and point
    !> the records of the others to it. Found through the elements around each first node.
    subroutine merge_copies(mesh, record_element)
       type(mesh_t), intent(inout) :: mesh
@@ -205,28 +244,29 @@ contains
       end do
    end subroutine index_group_records
 
-   !> Element types of the groups: volumes first, since a wrong volume type (2nd order) is the
-   !> cause of a wrong surface type.
-   subroutine check_group_types(file_name, raw, error)
+   !> Element types of the groups of the mesh's dimension `element_dim` (elements) and one
+   !> lower (boundary cells): the elements first, since a wrong element type (2nd order) is
+   !> the cause of a wrong boundary type.
+   subroutine check_group_types(file_name, raw, element_dim, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
+      integer, intent(in) :: element_dim
       type(error_t), allocatable, intent(out) :: error
       integer :: dim, r, k
-      do dim = 3, 2, -1
+      logical :: accepted
+      do dim = element_dim, element_dim - 1, -1
          do r = 1, raw%record_ids%count
             do k = raw%record_group_first%items(r), raw%record_group_first%items(r + 1) - 1
                if (raw%group_dims%items(raw%record_groups%items(k)) /= dim) cycle
                associate (element_type => raw%record_types%items(r), id => raw%record_ids%items(r))
-                  if (dim == 3 .and. .not. is_volume_cell(element_type)) then
-                     call fail_at_record(file_name, raw, r, error, 'only 8-node hexahedra (type 5), 4-node '// &
-                                         'tetrahedra (type 4) and 10-node tetrahedra (type 11) are supported: '// &
-                                         'element '//to_string(id)//' has type '//to_string(element_type))
-                     return
+                  if (dim == element_dim) then
+                     accepted = is_element_cell(element_type, element_dim)
+                  else
+                     accepted = is_boundary_cell(element_type, element_dim)
                   end if
-                  if (dim == 2 .and. .not. is_surface_cell(element_type)) then
-                     call fail_at_record(file_name, raw, r, error, 'only 4-node quadrilaterals (type 3), 3-node '// &
-                                         'triangles (type 2) and 6-node triangles (type 9) are supported on '// &
-                                         'surfaces: element '//to_string(id)//' has type '//to_string(element_type))
+                  if (.not. accepted) then
+                     call fail_at_record(file_name, raw, r, error, supported_types(element_dim, dim)// &
+                                         ': element '//to_string(id)//' has type '//to_string(element_type))
                      return
                   end if
                end associate
@@ -235,12 +275,33 @@ contains
       end do
    end subroutine check_group_types
 
+   !> The gmsh element types a physical group of dimension `dim` may hold in a mesh of
+   !> dimension `element_dim` (is_element_cell, is_boundary_cell), for messages.
+   function supported_types(element_dim, dim) result(text)
+      integer, intent(in) :: element_dim, dim
+      character(len=:), allocatable :: text
+      if (element_dim == 3 .and. dim == 3) then
+         text = 'only 8-node hexahedra (type 5), 4-node tetrahedra (type 4) and 10-node tetrahedra (type 11) '// &
+                'are supported'
+      else if (element_dim == 3) then
+         text = 'only 4-node quadrilaterals (type 3), 3-node triangles (type 2) and 6-node triangles (type 9) '// &
+                'are supported on surfaces'
+      else if (dim == 2) then
+         text = 'only 4-node quadrilaterals (type 3) and 3-node triangles (type 2) are supported in a plane '// &
+                'mesh (no volume elements)'
+      else
+         text = 'only 2-node lines (type 1) are supported on the curves of a plane mesh (no volume elements)'
+      end if
+   end function supported_types
+
    !> Node sets, element sets and surfaces of the physical groups, in the given order (element
-   !> types already checked: hexahedra or tetrahedra in volumes, quadrilaterals or triangles in
-   !> surfaces).
-   subroutine build_sets(file_name, raw, order, group_offsets, group_records, record_element, node_map, mesh, error)
+   !> types already checked: elements in the groups of dimension `element_dim`, boundary cells
+   !> in those one lower).
+   subroutine build_sets(file_name, raw, element_dim, order, group_offsets, group_records, record_element, &
+                         node_map, mesh, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
+      integer, intent(in) :: element_dim
       integer, intent(in) :: order(:), group_offsets(:), group_records(:), record_element(:)
       type(id_map_t), intent(in) :: node_map
       type(mesh_t), intent(inout) :: mesh
@@ -254,8 +315,8 @@ contains
          allocate (mesh%node_sets(0), mesh%element_sets(0), mesh%surfaces(0))
          return
       end if
-      n_volumes = count(raw%group_dims%items(order) == 3)
-      n_surfaces = count(raw%group_dims%items(order) == 2)
+      n_volumes = count(raw%group_dims%items(order) == element_dim)
+      n_surfaces = count(raw%group_dims%items(order) == element_dim - 1)
       allocate (mesh%node_sets(size(order)), mesh%element_sets(n_volumes), mesh%surfaces(n_surfaces))
       allocate (node_stamp(mesh%n_nodes), element_stamp(mesh%n_elements), face_stamp(6*mesh%n_elements))
       node_stamp = 0
@@ -275,21 +336,24 @@ contains
             call record_nodes(file_name, raw, r, node_map, nodes, error)
             if (allocated(error)) return
             node_stamp(nodes) = i
-            if (dim == 3) element_stamp(record_element(r)) = i
-            if (dim == 2) then
-               call stamp_face(file_name, raw, r, mesh, adjacency_offsets, adjacency, nodes, i, face_stamp, error)
+            if (dim == element_dim) element_stamp(record_element(r)) = i
+            if (dim == element_dim - 1) then
+               call stamp_face(file_name, raw, r, element_dim, mesh, adjacency_offsets, adjacency, nodes, i, &
+                               face_stamp, error)
                if (allocated(error)) return
             end if
          end do
-         call store_sets(mesh, i, dim, name, node_stamp, element_stamp, face_stamp, n_sets_volume, n_sets_surface)
+         call store_sets(mesh, i, dim, element_dim, name, node_stamp, element_stamp, face_stamp, &
+                         n_sets_volume, n_sets_surface)
       end do
    end subroutine build_sets
 
-   !> The sets of the i-th group, of dimension `dim`, from what its records stamped with i:
-   !> its node set, and the next element set (a volume) or surface (a surface).
-   subroutine store_sets(mesh, i, dim, name, node_stamp, element_stamp, face_stamp, n_sets_volume, n_sets_surface)
+   !> The sets of the i-th group, of dimension `dim`, from what its records stamped with i: its
+   !> node set, and the next element set (dim = element_dim, the mesh's) or surface (one lower).
+   subroutine store_sets(mesh, i, dim, element_dim, name, node_stamp, element_stamp, face_stamp, n_sets_volume, &
+                         n_sets_surface)
       type(mesh_t), intent(inout) :: mesh
-      integer, intent(in) :: i, dim
+      integer, intent(in) :: i, dim, element_dim
       character(len=*), intent(in) :: name
       integer, intent(in) :: node_stamp(:), element_stamp(:), face_stamp(:)
       integer, intent(inout) :: n_sets_volume, n_sets_surface   !! element sets and surfaces stored so far
@@ -297,11 +361,11 @@ contains
       integer :: k
       mesh%node_sets(i)%name = name
       mesh%node_sets(i)%nodes = pack([(k, k=1, mesh%n_nodes)], node_stamp == i)
-      if (dim == 3) then
+      if (dim == element_dim) then
          n_sets_volume = n_sets_volume + 1
          mesh%element_sets(n_sets_volume)%name = name
          mesh%element_sets(n_sets_volume)%elements = pack([(k, k=1, mesh%n_elements)], element_stamp == i)
-      else if (dim == 2) then
+      else if (dim == element_dim - 1) then
          n_sets_surface = n_sets_surface + 1
          mesh%surfaces(n_sets_surface)%name = name
          faces = pack([(k, k=1, 6*mesh%n_elements)], face_stamp == i)
@@ -330,24 +394,34 @@ contains
       end do
    end subroutine check_new_name
 
-   !> Stamp with `stamp` the element face of surface record r (its `nodes`); it must match
-   !> exactly one face.
-   subroutine stamp_face(file_name, raw, r, mesh, offsets, adjacency, nodes, stamp, face_stamp, error)
+   !> Stamp with `stamp` the element face of boundary record r (its `nodes`); it must match
+   !> exactly one face (an edge of a plane element, `element_dim` 2).
+   subroutine stamp_face(file_name, raw, r, element_dim, mesh, offsets, adjacency, nodes, stamp, face_stamp, error)
       character(len=*), intent(in) :: file_name
       type(raw_mesh_t), intent(in) :: raw
-      integer, intent(in) :: r
+      integer, intent(in) :: r, element_dim
       type(mesh_t), intent(in) :: mesh
       integer, intent(in) :: offsets(:), adjacency(:), nodes(:), stamp
       integer, intent(inout) :: face_stamp(:)
       type(error_t), allocatable, intent(out) :: error
       integer :: element, face, n_matches
+      character(len=:), allocatable :: boundary, face_of, shared
+      if (element_dim == 3) then
+         boundary = 'surface element '
+         face_of = 'face of a volume element'
+         shared = 'a face shared by two volume elements (an interior face)'
+      else
+         boundary = 'line element '
+         face_of = 'edge of a plane element'
+         shared = 'an edge shared by two plane elements (an interior edge)'
+      end if
       call match_face(mesh, offsets, adjacency, nodes, element, face, n_matches)
       if (n_matches == 0) then
-         call fail_at_record(file_name, raw, r, error, 'surface element '//to_string(raw%record_ids%items(r))// &
-                             ' matches no face of a volume element')
+         call fail_at_record(file_name, raw, r, error, boundary//to_string(raw%record_ids%items(r))// &
+                             ' matches no '//face_of)
       else if (n_matches > 1) then
-         call fail_at_record(file_name, raw, r, error, 'surface element '//to_string(raw%record_ids%items(r))// &
-                             ' lies on a face shared by two volume elements (an interior face)')
+         call fail_at_record(file_name, raw, r, error, boundary//to_string(raw%record_ids%items(r))// &
+                             ' lies on '//shared)
       else
          face_stamp(6*(element - 1) + face) = stamp
       end if

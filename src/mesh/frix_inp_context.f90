@@ -60,6 +60,10 @@ module frix_inp_context
       ! the cell of the current *ELEMENT keyword's elements, its node count and name (C3D8: HEX8)
       integer :: element_cell = 0, element_node_count = 8
       character(len=:), allocatable :: element_cell_name
+      ! the dimension of the mesh's cells (0 before the first *ELEMENT: 3 solids, 2 plane), and
+      ! the TYPE and "file:line" of the first *ELEMENT that set it (a mesh has one dimension)
+      integer :: cell_dimension = 0
+      character(len=:), allocatable :: dimension_type, dimension_where
    end type inp_data_t
 
 contains

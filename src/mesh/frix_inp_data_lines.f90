@@ -24,7 +24,7 @@ module frix_inp_data_lines
 
 contains
 
-   !> `id, x, y, z` of *NODE; the node joins the keyword's NSET if it has one.
+   !> `id, x, y, z` (or `id, x, y`: z = 0) of *NODE; the node joins the keyword's NSET if it has one.
    subroutine read_node_line(scanner, data, file, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(inp_data_t), intent(inout) :: data
@@ -34,7 +34,10 @@ contains
       integer :: id, k, existing
       call read_id(scanner, 'node', id, error)
       if (allocated(error)) return
+      xyz = 0
       do k = 1, 3
+         ! z may be left out (a plane mesh's node: `id, x, y`, z = 0)
+         if (k == 3 .and. scanner%at_end_of_line()) exit
          call scanner%read_real(xyz(k), error)
          if (allocated(error)) return
       end do
@@ -173,6 +176,9 @@ contains
    !> CalculiX's face k of a C3D8 (User's Manual, *DLOAD: 1: 1-2-3-4, 2: 5-8-7-6, 3: 1-5-6-2,
    !> 4: 2-6-7-3, 5: 3-7-8-4, 6: 4-8-5-1) has the nodes of frix's local face k (frix_hex8_cell),
    !> and so does face k of a C3D4 (1: 1-2-3, 2: 1-4-2, 3: 2-4-3, 4: 3-4-1; frix_tet4_cell).
+   !> Face k of a plane element (*DLOAD: quadrilaterals 1: 1-2, 2: 2-3, 3: 3-4, 4: 4-1;
+   !> triangles 1: 1-2, 2: 2-3, 3: 3-1) is its edge k, frix's local edge k (frix_quad4_cell,
+   !> frix_tri3_cell: the same node pairs).
    subroutine read_surface_line(scanner, data, error)
       type(text_scanner_t), intent(inout) :: scanner
       type(inp_data_t), intent(inout) :: data

@@ -8,13 +8,21 @@
 !>   the elements in file order (ids kept; the node orders of C3D8, C3D4 and C3D10 are those of
 !>   frix's HEX8, TET4 and TET10 cells: C3D10's mid-edge nodes 5-10 on the edges 1-2, 2-3,
 !>   3-1, 1-4, 2-4, 3-4, Abaqus Analysis User's Guide, "Three-dimensional solid element
-!>   library", and CalculiX User's Manual, "C3D10"). The type only gives the
-!>   cell: the formulation (integration, EAS) is the one of the deck's STRUCTURE ELEMENTS
-!>   property. Another TYPE is an error naming it;
+!>   library", and CalculiX User's Manual, "C3D10"); in a plane mesh (x-y plane),
+!>   TYPE=CPE4 | CPE4R | CPE4I | CAX4 | CAX4R | CAX4I (4-node quadrilaterals, QUAD4 cells) or
+!>   TYPE=CPE3 | CAX3 (3-node triangles, TRI3 cells), whose nodes are counter-clockwise as
+!>   frix's QUAD4 and TRI3 (CalculiX User's Manual, sections on the plane strain and
+!>   axisymmetric elements: the node numbering of the S4 and S3 shells; and *DLOAD's faces of
+!>   plane elements, 1-2, 2-3, 3-4, 4-1). The type only gives the
+!>   cell: the formulation (integration, EAS; plane strain or axisymmetric) is the one of the
+!>   deck's STRUCTURE ELEMENTS property. Plane stress types (CPS...) and other TYPEs are errors
+!>   naming them, and so is a file with both solid and plane types;
 !> - *NSET, NSET= and *ELSET, ELSET= (optional GENERATE): node sets and element sets, sorted
 !>   and unique; a set defined again gets the new members too (as in Abaqus);
 !> - *SURFACE, NAME= (TYPE=ELEMENT, the default): a surface of element faces S1..S6 of a
-!>   hexahedron (S1..S4 of a tetrahedron), which are frix's local faces 1..6 (1..4);
+!>   hexahedron (S1..S4 of a tetrahedron), which are frix's local faces 1..6 (1..4); of a
+!>   plane element, its edges S1..S4 of a quadrilateral (S1..S3 of a triangle), frix's local
+!>   edges 1..4 (1..3);
 !> - *INCLUDE, INPUT=: the lines of that file (path relative to the including file), read
 !>   in place: data lines there continue the keyword before the *INCLUDE;
 !> - *HEADING and every other keyword (materials, *STEP, *BOUNDARY, loads, ...), with its
@@ -28,8 +36,9 @@ module frix_inp_reader
    use frix_strings, only: to_string, to_upper
    use frix_text_scanner, only: text_scanner_t, open_text_file
    use frix_mesh, only: mesh_t, cell_index, connectivity_rows
+   use frix_cell_registry, only: cell_entry_t, cell_table
    use frix_mesh_selection, only: sorted_unique
-   use frix_gmsh_context, only: shorten
+   use frix_gmsh_context, only: shorten, first_off_plane, off_plane_message
    use frix_inp_keyword, only: inp_keyword_t, read_keyword_line
    use frix_inp_context, only: inp_data_t, node_kind, element_kind, set_index, new_surface, add_file, &
                                mode_skip, mode_node, mode_element, mode_set, mode_set_generate, mode_surface
@@ -55,8 +64,22 @@ contains
       if (allocated(error)) return
       call check_no_pending(data, error)
       if (allocated(error)) return
+      call check_plane_nodes(data, error)
+      if (allocated(error)) return
       call build_mesh(data, mesh)
    end subroutine read_inp
+
+   !> The nodes of a mesh of plane elements lie in the x-y plane (first_off_plane): error
+   !> naming the line of the first that does not.
+   subroutine check_plane_nodes(data, error)
+      type(inp_data_t), intent(in) :: data
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      if (data%cell_dimension /= 2 .or. data%node_ids%count == 0) return
+      i = first_off_plane(data%coords(:, 1:data%node_ids%count))
+      if (i /= 0) call fatal_error(error, where_defined(data, data%node_files%items(i), data%node_lines%items(i))// &
+                                   ': '//off_plane_message(data%node_ids%items(i), data%coords(3, i)))
+   end subroutine check_plane_nodes
 
    !> Read the lines of one file (the main one, depth 0, or an *INCLUDE).
    recursive subroutine read_file(path, data, depth, error)
@@ -165,16 +188,75 @@ contains
       case ('C3D10')
          data%element_cell_name = 'TET10'
          data%element_node_count = 10
+      case ('CPE4', 'CPE4R', 'CPE4I', 'CAX4', 'CAX4R', 'CAX4I')
+         data%element_cell_name = 'QUAD4'
+         data%element_node_count = 4
+      case ('CPE3', 'CAX3')
+         data%element_cell_name = 'TRI3'
+         data%element_node_count = 3
       case default
-         call scanner%fail_at_token(error, 'element type '//shorten(keyword%value_of('TYPE'))// &
-                                    ' is not supported: frix reads 8-node hexahedra (C3D8, C3D8R, C3D8I),'// &
-                                    ' 4-node tetrahedra (C3D4) and 10-node tetrahedra (C3D10)')
+         call fail_element_type(scanner, keyword%value_of('TYPE'), error)
          return
       end select
       data%element_cell = cell_index(data%element_cell_name)
+      call check_dimension(scanner, keyword%value_of('TYPE'), data, error)
+      if (allocated(error)) return
       data%mode = mode_element
       if (keyword%has('ELSET')) data%target_set = set_index(data, element_kind, keyword%value_of('ELSET'))
    end subroutine start_element
+
+   !> Error at the TYPE= token: element type `element_type` is not read (plane stress: not
+   !> offered by frix).
+   subroutine fail_element_type(scanner, element_type, error)
+      type(text_scanner_t), intent(inout) :: scanner
+      character(len=*), intent(in) :: element_type
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: plane_types = 'plane strain (CPE3, CPE4, CPE4R, CPE4I) and axisymmetric '// &
+                                                   '(CAX3, CAX4, CAX4R, CAX4I) elements'
+      if (index(to_upper(element_type), 'CPS') == 1) then
+         call scanner%fail_at_token(error, 'element type '//shorten(element_type)//' is a plane stress element, '// &
+                                    'which frix does not offer: its plane elements are '//plane_types)
+      else
+         call scanner%fail_at_token(error, 'element type '//shorten(element_type)// &
+                                    ' is not supported: frix reads 8-node hexahedra (C3D8, C3D8R, C3D8I),'// &
+                                    ' 4-node tetrahedra (C3D4) and 10-node tetrahedra (C3D10), and '// &
+                                    plane_types)
+      end if
+   end subroutine fail_element_type
+
+   !> The cells of a mesh have one dimension: error at the TYPE= token of an *ELEMENT whose
+   !> cell (`data%element_cell`) has another dimension than the cells before it.
+   subroutine check_dimension(scanner, element_type, data, error)
+      type(text_scanner_t), intent(inout) :: scanner
+      character(len=*), intent(in) :: element_type
+      type(inp_data_t), intent(inout) :: data
+      type(error_t), allocatable, intent(out) :: error
+      type(cell_entry_t), allocatable :: table(:)
+      integer :: dim
+      table = cell_table()
+      dim = table(data%element_cell)%cell%dimension
+      if (data%cell_dimension == 0) then
+         data%cell_dimension = dim
+         data%dimension_type = element_type
+         data%dimension_where = scanner%location()
+      else if (dim /= data%cell_dimension) then
+         call scanner%fail_at_token(error, 'element type '//shorten(element_type)//' is '//dimension_word(dim)// &
+                                    ', but the elements of TYPE='//shorten(data%dimension_type)//' ('// &
+                                    data%dimension_where//') are '//dimension_word(data%cell_dimension)// &
+                                    ': a mesh has either solid or plane elements, not both')
+      end if
+   end subroutine check_dimension
+
+   !> 'solid (3D)' or 'plane (2D)', for messages.
+   pure function dimension_word(dim) result(word)
+      integer, intent(in) :: dim
+      character(len=:), allocatable :: word
+      if (dim == 3) then
+         word = 'solid (3D)'
+      else
+         word = 'plane (2D)'
+      end if
+   end function dimension_word
 
    !> *NSET, NSET=name or *ELSET, ELSET=name, optionally GENERATE.
    subroutine start_set(scanner, keyword, data, kind, error)

@@ -7,9 +7,10 @@
       eps_33 = G11 (axisymmetric: the hoop strain u_r / r of u_r = G11 r, which needs G12 = 0),
       and its stress the linear elastic one of that strain; all to 1e-10 relative. Cells of
       the HDF5 file: VTK_QUAD (9).
-  check_plane.py OUT BASE history COLUMN=REFERENCE:TOLERANCE ...
-      The last row of the history CSV: each column within the relative tolerance of its
-      reference (the reference's source is given where the test is registered).
+  check_plane.py OUT BASE history COLUMN[@TIME]=REFERENCE:TOLERANCE ...
+      The history CSV's row at pseudo time TIME (default: the last row): each column within
+      the relative tolerance of its reference (the reference's source is given where the test
+      is registered).
 
 OUT is the run's output folder, BASE the deck's name (files OUT/BASE.h5, OUT/BASE_history.csv).
 Exit 0 if every check holds.
@@ -68,16 +69,23 @@ def check_patch(args):
 def check_history(args):
     with open(pathlib.Path(args.out) / f"{args.base}_history.csv") as f:
         rows = list(csv.DictReader(row for row in f if not row.startswith("#")))
-    last = rows[-1]
     failed = 0
     for item in args.checks:
         column, rest = item.split("=")
         reference, tolerance = (float(v) for v in rest.split(":"))
-        value = float(last[column])
+        row = rows[-1]
+        if "@" in column:
+            column, time = column.split("@")
+            matching = [r for r in rows if abs(float(r["time"]) - float(time)) <= 1e-9 * max(1.0, abs(float(time)))]
+            if not matching:
+                print(f"no history row at time {time}")
+                return 1
+            row = matching[-1]
+        value = float(row[column])
         error = (value - reference) / abs(reference)
         ok = abs(error) <= tolerance
         failed += not ok
-        print(f"{column} = {value:.7e}, reference {reference:.7e}: {error:+.2e} relative "
+        print(f"{column} at t = {float(row['time']):g}: {value:.7e}, reference {reference:.7e}: {error:+.2e} relative "
               f"(tolerance {tolerance:.1e}) {'ok' if ok else 'FAIL'}")
     return 1 if failed else 0
 
@@ -93,7 +101,7 @@ def main():
     patch.add_argument("--young", type=float, required=True)
     patch.add_argument("--poisson", type=float, required=True)
     patch.add_argument("--axisymmetric", action="store_true")
-    history.add_argument("checks", nargs="+", metavar="COLUMN=REFERENCE:TOLERANCE")
+    history.add_argument("checks", nargs="+", metavar="COLUMN[@TIME]=REFERENCE:TOLERANCE")
     args = parser.parse_args()
     return check_patch(args) if args.what == "patch" else check_history(args)
 

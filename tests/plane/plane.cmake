@@ -30,6 +30,17 @@ add_test(NAME plane_tube_axisymmetric_lame
 set_tests_properties(plane_patch_plane_strain plane_patch_axisymmetric plane_beam_against_slab
                      plane_ring_against_slab plane_ring_lame plane_tube_axisymmetric_lame
                      PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# S6(a) the seed's pipe, axisymmetric, elastic-plastic with hardening: Lame at p = 9 and the
+# independent 1D solution at p = 90 (docs/verification/s6a_pipe.md) within 0.1 %.
+add_test(NAME plane_s6a_axisymmetric
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/s6a_axisym.dck ${plane_check} history
+                 u1_n1@1=1.661977672e-4:1e-3 u1_n5@1=1.639279950e-4:1e-3 u1_n1@2=4.674524e-3:1e-3 u1_n5@2=4.541972e-3:1e-3)
+set_tests_properties(plane_s6a_axisymmetric PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
+# Restart of a plastic, total Lagrangian axisymmetric run from 1.2 and 1.3: the final state
+# bit for bit the uninterrupted run's (tests/restart/restart_test.sh).
+add_test(NAME restart_axisym COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_test.sh ${FRIX_BIN}
+         ${plane_dir}/restart_axisym.dck 1.2 1.3)
+set_tests_properties(restart_axisym PROPERTIES LABELS regression TIMEOUT ${scaled_60})
 # V2 Cook's membrane, 16 x 16: PLANE4 on the z = 0 layer of the HEX8 mesh against the plain
 # HEX8 slab with u_z = 0 (cook_plane_hex8_16x16.dck: the same field, the same numbers).
 add_test(NAME plane_cook_against_slab

@@ -4,7 +4,7 @@ module test_data_location
    implicit none
    private
 
-   public :: data_path
+   public :: data_path, tests_path
 
 contains
 
@@ -28,4 +28,13 @@ contains
       end if
       path = 'tests/unit/mesh/data/'//name
    end function data_path
+   !> Path of `name` relative to the tests folder (e.g. 'inp/plate2d.inp'): found as data_path's
+   !> folder is.
+   function tests_path(name) result(path)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      character(len=*), parameter :: data_folder = 'unit/mesh/data/'
+      path = data_path('')
+      path = path(1:len(path) - len(data_folder))//name
+   end function tests_path
 end module test_data_location

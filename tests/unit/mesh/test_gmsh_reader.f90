@@ -18,7 +18,7 @@ module test_gmsh_reader
    implicit none
    private
 
-   public :: collect_gmsh_reader, collect_gmsh_errors, read_block
+   public :: collect_gmsh_reader, collect_gmsh_errors, read_block, replaced, write_text, delete_file
 
    character(len=*), parameter :: nl = new_line('a')
 
@@ -507,6 +507,16 @@ contains
       character(len=*), intent(in) :: name, text
       type(mesh_t), intent(out) :: mesh
       type(error_t), allocatable, intent(out) :: read_error, error
+      call write_text(name, text, error)
+      if (allocated(error)) return
+      call read_gmsh(output_path(name), mesh, read_error)
+      call delete_file(name)
+   end subroutine read_text
+
+   !> Write `text` to the file `name` (output_path) as it is.
+   subroutine write_text(name, text, error)
+      character(len=*), intent(in) :: name, text
+      type(error_t), allocatable, intent(out) :: error
       integer :: unit, status
       open (newunit=unit, file=output_path(name), status='replace', access='stream', form='unformatted', &
             action='write', iostat=status)
@@ -514,10 +524,15 @@ contains
       if (allocated(error)) return
       write (unit) text
       close (unit)
-      call read_gmsh(output_path(name), mesh, read_error)
+   end subroutine write_text
+
+   !> Delete the file `name` (output_path) if it exists.
+   subroutine delete_file(name)
+      character(len=*), intent(in) :: name
+      integer :: unit, status
       open (newunit=unit, file=output_path(name), status='old', iostat=status)
       if (status == 0) close (unit, status='delete')
-   end subroutine read_text
+   end subroutine delete_file
 
    !> Read `text` (written to `name`), expecting an error containing "name:" then `fragment`.
    subroutine expect_text_error(name, text, fragment, error)
