@@ -50,8 +50,8 @@ set_tests_properties(plane_cook_against_slab PROPERTIES LABELS regression TIMEOU
 # V2 Cook's membrane 16 x 16 with PLANE4 EAS 4 (cook_plane2d_eas4_16x16.dck, make_cook_deck.py):
 # u_y(C) against 23.96 (Simo & Rifai 1990; docs/verification.md V2), 2 % (measured 23.883, -0.32 %;
 # plain PLANE4 23.43), and against the HEX8 EAS 9 slab with u_z = 0 on the same nodes
-# (cook_plane_eas9_16x16.dck: in one layer without variation along z its zeta modes stay 0 and
-# the in-plane modes are EAS 4's, so the same numbers; measured to 5e-14).
+# (cook_plane_eas9_16x16.dck: one layer without variation along z, whose in-plane modes are
+# EAS 4's; measured the same to 5e-14).
 add_test(NAME plane_cook_eas4
          COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/cook_plane2d_eas4_16x16.dck ${plane_check}
                  history u2_n31=23.96:0.02)
