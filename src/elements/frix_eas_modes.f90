@@ -20,16 +20,22 @@
 !>   EAS30 (frix's table, the complete enhancement under 2x2x2 quadrature; see docs):
 !>          EAS21 + E11, E22, E33 ~ xi eta zeta; E12 ~ xi eta, xi eta zeta;
 !>          E13 ~ xi zeta, xi eta zeta; E23 ~ eta zeta, xi eta zeta
+!> The 4-node quadrilateral (frix_plane_solid), parent coordinates (xi, eta) in [-1, 1]^2, the
+!> in-plane rows 11 22 12 of the same Voigt layout (rows 33 13 23 not enhanced):
+!>   EAS4  (Simo & Rifai 1990, IJNME 29, the Q1/E4 element): E11 ~ xi, E22 ~ eta, E12 ~ xi, eta
 module frix_eas_modes
    use frix_kinds, only: dp
    implicit none
    private
 
    public :: eas_mode_counts, max_eas_modes, is_valid_eas_count, eas_modes, strain_push_matrix
+   public :: plane_eas_counts, plane_eas_modes
 
    !> The supported numbers of enhanced parameters (0 = plain displacement element).
    integer, parameter :: eas_mode_counts(5) = [0, 3, 9, 21, 30]
    integer, parameter :: max_eas_modes = 30   !! largest entry of eas_mode_counts
+   !> The supported numbers of enhanced parameters of the 4-node quadrilateral.
+   integer, parameter :: plane_eas_counts(2) = [0, 4]
 
 contains
 
@@ -89,6 +95,20 @@ contains
       modes(6, 29) = s*t
       modes(6, 30) = r*s*t
    end subroutine eas_modes
+
+   !> Enhanced natural strain interpolation M(xi) (6 x n_eas) of the quadrilateral at the
+   !> parent point `xi` (module header; n_eas 0 or 4, the caller checks it).
+   pure subroutine plane_eas_modes(n_eas, xi, modes)
+      integer, intent(in) :: n_eas          !! 0 or 4
+      real(dp), intent(in) :: xi(2)         !! parent coordinates (xi, eta)
+      real(dp), intent(out) :: modes(:, :)  !! (6, n_eas), Voigt rows 11 22 33 12 13 23
+      modes = 0.0_dp
+      if (n_eas < 4) return
+      modes(1, 1) = xi(1)
+      modes(2, 2) = xi(2)
+      modes(4, 3) = xi(1)
+      modes(4, 4) = xi(2)
+   end subroutine plane_eas_modes
 
    !> Voigt matrix of the congruence X -> P X P^T acting on symmetric strain tensors stored
    !> with engineering shears on both sides: strain(P X P^T) = push strain(X).

@@ -9,10 +9,10 @@
 !>   HEXA8-E3  CARAT's name of HEX8 with EAS 3
 !>   TET4      4-node tetrahedron, no options (frix_cell_solid)
 !>   TET10     10-node tetrahedron, no options (frix_cell_solid)
-!>   PLANE4    4-node quadrilateral, plane strain, option THICKNESS (default 1)
+!>   PLANE4    4-node quadrilateral, plane strain, options THICKNESS (default 1), EAS 0 or 4
 !>   PLANE3    3-node triangle, plane strain, option THICKNESS (frix_plane_solid_options)
-!>   AXISYM4   4-node quadrilateral, axisymmetric (x = radius, y = axis), no options
-!>   AXISYM3   3-node triangle, axisymmetric, no options
+!>   AXISYM4   4-node quadrilateral, axisymmetric (x = radius, y = axis), option EAS 0 or 4
+!>   AXISYM3   3-node triangle, axisymmetric (EAS 0 only)
 module frix_element_registry
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
@@ -20,8 +20,8 @@ module frix_element_registry
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
    use frix_hex8_options, only: hex8_options, hex8_from_options, hexa8_e3_from_options
    use frix_cell_solid, only: tet4_from_options, tet10_from_options, no_options
-   use frix_plane_solid_options, only: plane_strain_options, plane4_from_options, plane3_from_options, &
-                                       axisym4_from_options, axisym3_from_options
+   use frix_plane_solid_options, only: plane_strain_options, axisymmetric_options, plane4_from_options, &
+                                       plane3_from_options, axisym4_from_options, axisym3_from_options
    implicit none
    private
 
@@ -76,9 +76,9 @@ contains
                element_entry_t('TET4', 'TET4', 'TET4', 4, tet4_from_options, no_options), &
                element_entry_t('TET10', 'TET10', 'TET10', 10, tet10_from_options, no_options), &
                element_entry_t('PLANE4', 'PLANE4', 'QUAD4', 4, plane4_from_options, plane_strain_options), &
-               element_entry_t('AXISYM4', 'AXISYM4', 'QUAD4', 4, axisym4_from_options, no_options), &
+               element_entry_t('AXISYM4', 'AXISYM4', 'QUAD4', 4, axisym4_from_options, axisymmetric_options), &
                element_entry_t('PLANE3', 'PLANE3', 'TRI3', 3, plane3_from_options, plane_strain_options), &
-               element_entry_t('AXISYM3', 'AXISYM3', 'TRI3', 3, axisym3_from_options, no_options)]
+               element_entry_t('AXISYM3', 'AXISYM3', 'TRI3', 3, axisym3_from_options, axisymmetric_options)]
    end function element_table
 
    !> The shape of `keyword` (any case); `found` false if no shape has it.

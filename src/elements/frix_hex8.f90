@@ -14,10 +14,9 @@
 !>   (Grad N_a . S . Grad N_b) I (Bathe, Finite Element Procedures, 6.2; Wriggers, Nonlinear FEM, 4.2).
 !> EAS: E~ = (detJ0/detJ(xi)) T0^{-T} M(xi) alpha = G(xi) alpha (Simo & Rifai 1990; for the
 !>   Green-Lagrange enhancement Buechter, Ramm & Roehl 1994, Simo & Armero 1992). alpha is
-!>   solved locally so that h = sum_g G^T S dV_g = 0 (Newton with a line search, K_aa solved
-!>   after diagonal scaling, each mode's residual against its own scale: solve_enhanced);
-!>   the returned tangent is the statically
-!>   condensed K_uu - K_ua K_aa^{-1} K_au, i.e. exactly d fint/du with alpha = alpha(u).
+!>   solved locally so that h = sum_g G^T S dV_g = 0 and the returned tangent is the statically
+!>   condensed K_uu - K_ua K_aa^{-1} K_au, i.e. exactly d fint/du with alpha = alpha(u): the
+!>   local Newton, its line search and the condensation are frix_enhanced_strain's.
 !> Initial stress S0 (an in-situ stress, element_t): S = material(E) starts from S0 at E = 0
 !>   (material_t%initial_stress_response), fint and the geometric stiffness take the whole S.
 !>   The enhanced equations weigh S - S0: h = sum_g G^T (S - S0) dV = 0. This is the variation
@@ -38,7 +37,8 @@ module frix_hex8
    use frix_element, only: element_t, kinematics_linear, kinematics_total_lagrangian
    use frix_eas_modes, only: max_eas_modes, is_valid_eas_count, eas_modes, strain_push_matrix
    use frix_vector_algebra, only: determinant, invert3
-   use frix_dense_algebra, only: solve_in_place
+   use frix_enhanced_strain, only: local_problem_t, start_local_problem, set_enhanced_operator, enhanced_response, &
+                                   condense, check_deformation, max_local_iterations, local_tolerance
    use frix_hex8_cell, only: hex8_corner, hex8_gauss_points
    use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
                                     tensor_from_voigt
@@ -67,73 +67,10 @@ module frix_hex8
    !> Parent derivatives at the centre xi = 0: xi_ia / 8, (3, 8).
    real(dp), parameter :: centre_derivative(3, 8) = 0.125_dp*hex8_corner
 
-   !> Newton steps on alpha before giving up. Under total Lagrangian kinematics with little
-   !> hardening a local solve far from equilibrium can take some 20-40 line-searched steps
-   !> before it converges quadratically (a thin element of a global Newton iterate).
-   integer, parameter :: max_local_iterations = 50
-   !> Material passes of the line search along one Newton step (enhanced_line_search).
-   integer, parameter :: max_line_search_trials = 8
-   !> The line search ends where |d . h| <= line_search_ratio |d . h(alpha)| along the step d.
-   real(dp), parameter :: line_search_ratio = 0.25_dp
-   !> The regula falsi's trial stays this fraction of the bracket away from its ends.
-   real(dp), parameter :: bracket_guard = 0.1_dp
-   !> Longest step along d (in Newton steps) that the line search tries.
-   real(dp), parameter :: max_step_length = 8.0_dp
-   !> Converged: every |h_k| <= local_tolerance sum_g |G_gk| max|S_g| dV, each mode against the
-   !> size of its own terms (a test against the largest mode's terms would leave the modes along
-   !> the length of a thin element, whose G is (thickness / length)^2 smaller, unconverged).
-   real(dp), parameter :: local_tolerance = 1.0e-12_dp
-   !> Round-off plateau test: |h| stopped decreasing and |h_k| <= plateau_tolerance *
-   !> sum_g |G_gk| stress_floor max|C| dV, i.e. below 1e-12 |C| |G| dV, the round-off of S.
-   real(dp), parameter :: stress_floor = 1.0e-2_dp
-   real(dp), parameter :: plateau_tolerance = 1.0e-10_dp
-   !> Where K_aa is singular: the weight w of the elastic K_aa^el added to it (K_aa + w K_aa^el,
-   !> positive definite; solve_enhanced_system) in the local steps and in the condensation of an
-   !> unsymmetric tangent (local_regularisation), and in the condensation of a symmetric one
-   !> (condensation_regularisation: the null space of K_aa lies in that of K_ua there, and a w
-   !> small against 1 leaves the condensed tangent exact to about w; docs/elements.md).
-   real(dp), parameter :: local_regularisation = 1.0_dp
-   real(dp), parameter :: condensation_regularisation = 1.0e-8_dp
-
    !> Voigt rows (11 22 33 12 13 23) and derivative directions of the three nonzero entries
    !> of column i of the linear nodal strain-displacement block B_a (6 x 3).
    integer, parameter :: b_row(3, 3) = reshape([1, 4, 5, 2, 4, 6, 3, 5, 6], [3, 3])
    integer, parameter :: b_derivative(3, 3) = reshape([1, 2, 3, 2, 1, 3, 3, 1, 2], [3, 3])
-
-   !> The fixed data of an element's local EAS problem h(alpha) = 0.
-   type :: local_problem_t
-      integer :: n = 0                  !! number of enhanced parameters
-      logical :: finite = .false.       !! total Lagrangian: strains E, stresses S
-      real(dp) :: enhanced(6, max_eas_modes, 8) = 0.0_dp   !! G at each point
-      real(dp) :: volume(8) = 0.0_dp                       !! dV at each point
-      real(dp) :: compatible(6, 8) = 0.0_dp                !! compatible strains
-      logical :: prestressed = .false.                     !! the points start from `initial`
-      real(dp) :: initial(6, 8) = 0.0_dp                   !! sigma0 (S0) at each point
-      real(dp) :: elastic(6, 6) = 0.0_dp   !! the law's elastic moduli D (regularises a singular K_aa)
-   end type local_problem_t
-
-   !> The local problem evaluated at one alpha.
-   type :: local_point_t
-      real(dp) :: total(6, 8), pk2(6, 8), moduli(6, 6, 8)   !! strains, stresses, tangents
-      real(dp) :: residual(max_eas_modes)      !! h = sum_g G^T S dV
-      real(dp) :: scale(max_eas_modes)         !! sum_g |G_g| max|S_g| dV, the size of h's terms
-      real(dp) :: floor_scale(max_eas_modes)   !! sum_g |G| stress_floor max|C| dV
-   end type local_point_t
-
-   !> The state of one line search along a local Newton step (enhanced_line_search).
-   type :: line_search_t
-      real(dp) :: slope0 = 0.0_dp, norm0 = 0.0_dp   !! phi(0) = d . h and |h| at the step's start
-      logical :: energy = .true.   !! phi(0) < 0: regula falsi on phi, else halving on |h|
-      real(dp) :: low = 0.0_dp, slope_low = 0.0_dp     !! bracket: phi(low) < 0 ...
-      real(dp) :: high = 0.0_dp, slope_high = 0.0_dp   !! ... phi(high) > 0 (huge: failed; high <= low: none yet)
-      integer :: side = 0        !! which end moved last (-1 low, 1 high), for the Illinois rule
-      real(dp) :: s = 1.0_dp     !! the trial step
-      real(dp) :: kept_s = 0.0_dp   !! the last admissible trial (0: none yet)
-      real(dp) :: max_s = max_step_length   !! the longest step tried
-   contains
-      procedure :: start => line_search_start
-      procedure :: accepts => line_search_accepts
-   end type line_search_t
 
    !> The HEX8 family. Construct with `new_hex8`.
    type, extends(element_t) :: hex8_t
@@ -228,7 +165,7 @@ contains
       real(dp) :: deformation(3, 3, 8)     ! F (identity under linear kinematics)
       real(dp) :: compatible(6, 8), total(6, 8), pk2(6, 8), moduli(6, 6, 8)
       type(local_problem_t) :: problem
-      type(local_point_t) :: point
+      real(dp) :: b_blocks(6, 3, 8, 8)
       integer :: n, g, bad_point
       logical :: total_lagrangian, symmetric
 
@@ -254,33 +191,22 @@ contains
       do g = 1, 8
          call compatible_kinematics(dn_dx(:, :, g), u, total_lagrangian, deformation(:, :, g), &
                                     compatible(:, g))
-         if (total_lagrangian) then
-            if (determinant(deformation(:, :, g)) <= 0.0_dp) then
-               call fatal_error(error, self%name//': non-positive deformation gradient determinant '// &
-                                to_string(determinant(deformation(:, :, g)))// &
-                                ' at integration point '//to_string(g))
-               return
-            end if
-         end if
       end do
+      if (total_lagrangian) then
+         call check_deformation(self%name, deformation, error)
+         if (allocated(error)) return
+      end if
 
       if (n > 0) then
-         problem%n = n
-         problem%finite = total_lagrangian
-         problem%volume = volume
-         problem%compatible = compatible
          if (present(initial_stress)) then
-            problem%prestressed = .true.
-            problem%initial = initial_stress(:, 1:8)
+            call start_local_problem(problem, n, total_lagrangian, volume, compatible, initial_stress)
+         else
+            call start_local_problem(problem, n, total_lagrangian, volume, compatible)
          end if
-         call enhanced_operators(self%name, coords, volume, n, problem%enhanced, error)
+         call enhanced_operators(self%name, coords, volume, problem, error)
          if (allocated(error)) return
-         call material%elastic_tangent(problem%elastic)
-         call solve_enhanced(self%name, material, problem, state_old, state_new, alpha(1:n), point, error)
+         call enhanced_response(self%name, material, problem, state_old, state_new, alpha, total, pk2, moduli, error)
          if (allocated(error)) return
-         total = point%total
-         pk2 = point%pk2
-         moduli = point%moduli
       else
          total = compatible
          if (present(initial_stress)) then
@@ -302,7 +228,10 @@ contains
             call tangent_linear(dn_dx, volume, moduli, symmetric, tangent)
          end if
          if (n > 0) then
-            call condense(self%name, problem, dn_dx, deformation, moduli, symmetric, tangent, error)
+            do g = 1, 8
+               call nonlinear_b(deformation(:, :, g), dn_dx(:, :, g), b_blocks(:, :, :, g))
+            end do
+            call condense(self%name, problem, b_blocks, moduli, symmetric, tangent, error)
             if (allocated(error)) return
          end if
       end if
@@ -344,15 +273,15 @@ contains
    end subroutine reference_gradients
 
    !> G_g = (detJ0 / detJ_g) T0^{-T} M(xi_g), (6, n, 8), T0^{-T} from J0 = J(xi = 0).
-   subroutine enhanced_operators(name, coords, volume, n, enhanced, error)
+   subroutine enhanced_operators(name, coords, volume, problem, error)
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: coords(:, :)
       real(dp), intent(in) :: volume(8)
-      integer, intent(in) :: n
-      real(dp), intent(out) :: enhanced(:, :, :)
+      type(local_problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
       real(dp) :: jacobian0(3, 3), inverse0(3, 3), det0, push(6, 6), modes(6, max_eas_modes)
-      integer :: g
+      integer :: g, n
+      n = problem%n
       jacobian0 = matmul(centre_derivative, transpose(coords(:, 1:8)))
       call invert3(jacobian0, inverse0, det0)
       if (.not. (det0 > 0.0_dp)) then
@@ -363,337 +292,9 @@ contains
       call strain_push_matrix(inverse0, push)
       do g = 1, 8
          call eas_modes(n, hex8_gauss_points(:, g), modes(:, 1:n))
-         enhanced(:, 1:n, g) = (det0/volume(g))*matmul(push, modes(:, 1:n))
+         call set_enhanced_operator(problem, g, det0/volume(g), push, modes(:, 1:n))
       end do
    end subroutine enhanced_operators
-
-   !> Local Newton on alpha: h(alpha) = sum_g G_g^T S_g dV_g = 0, starting from the alpha
-   !> passed in, with K_aa = sum_g G^T C G dV and a line search along each Newton step
-   !> (enhanced_line_search). Converged when every |h_k| <= local_tolerance sum_g |G_gk|
-   !> max|S_g| dV_g, or when |h| stops decreasing at round-off level (see plateau_tolerance); fails after
-   !> max_local_iterations steps. On return stresses, tangents and history belong to the
-   !> converged alpha.
-   subroutine solve_enhanced(name, material, problem, state_old, state_new, alpha, point, error)
-      character(len=*), intent(in) :: name
-      class(material_t), intent(in) :: material
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: state_old(:, :)
-      real(dp), intent(inout) :: state_new(:, :)
-      real(dp), intent(inout) :: alpha(:)
-      type(local_point_t), intent(out) :: point
-      type(error_t), allocatable, intent(out) :: error
-      real(dp) :: direction(max_eas_modes, 1), previous_max
-      integer :: iteration, n
-      logical :: singular, regularised
-      n = problem%n
-      call evaluate_local(name, material, problem, alpha(1:n), state_old, state_new, point, error)
-      if (allocated(error)) return
-      previous_max = huge(1.0_dp)
-      do iteration = 1, max_local_iterations
-         if (local_converged(point, n, previous_max)) return
-         previous_max = maxval(abs(point%residual(1:n)))
-         direction(1:n, 1) = -point%residual(1:n)
-         call solve_enhanced_system(problem, point%moduli, local_regularisation, direction(1:n, :), singular, &
-                                    regularised)
-         if (singular) then
-            call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
-            return
-         end if
-         call enhanced_line_search(name, material, problem, direction(1:n, 1), merge(1.0_dp, max_step_length, &
-                                   regularised), state_old, state_new, alpha(1:n), point, error)
-         if (allocated(error)) return
-      end do
-      if (local_converged(point, n, previous_max)) return
-      call fatal_error(error, name//': local EAS iteration not converged after '// &
-                       to_string(max_local_iterations)//' steps (|h| = '// &
-                       to_string(maxval(abs(point%residual(1:n))))//')')
-   end subroutine solve_enhanced
-
-   !> Every |h_k| <= local_tolerance scale_k (a mode without stress, scale_k = 0, must have
-   !> h_k = 0), or the round-off plateau: a stress computed with cancellation (neo-Hookean
-   !> S = mu (I - C^-1) + ...) carries errors of order 1e-16 |C| however small it is, which
-   !> the relative test cannot beat in a nearly unstressed element: a residual that stopped
-   !> decreasing (above half the last one) at a level negligible against stress_floor |C| is
-   !> accepted.
-   pure logical function local_converged(point, n, previous_max) result(converged)
-      type(local_point_t), intent(in) :: point
-      integer, intent(in) :: n
-      real(dp), intent(in) :: previous_max   !! max|h| of the last step (huge before the first)
-      real(dp) :: residual_max
-      converged = all(abs(point%residual(1:n)) <= local_tolerance*point%scale(1:n))
-      if (converged) return
-      residual_max = maxval(abs(point%residual(1:n)))
-      converged = residual_max > 0.5_dp*previous_max .and. &
-                  all(abs(point%residual(1:n)) <= plateau_tolerance*point%floor_scale(1:n))
-   end function local_converged
-
-   !> Strains, material response, h and its scales at alpha (all 8 points).
-   subroutine evaluate_local(name, material, problem, alpha, state_old, state_new, point, error)
-      character(len=*), intent(in) :: name
-      class(material_t), intent(in) :: material
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: alpha(:)
-      real(dp), intent(in) :: state_old(:, :)
-      real(dp), intent(inout) :: state_new(:, :)
-      type(local_point_t), intent(out) :: point
-      type(error_t), allocatable, intent(out) :: error
-      integer :: g, n
-      n = problem%n
-      do g = 1, 8
-         point%total(:, g) = problem%compatible(:, g) + matmul(problem%enhanced(:, 1:n, g), alpha(1:n))
-      end do
-      if (problem%prestressed) then
-         call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
-                            point%moduli, error, problem%initial)
-      else
-         call material_pass(name, material, problem%finite, point%total, state_old, state_new, point%pk2, &
-                            point%moduli, error)
-      end if
-      if (allocated(error)) return
-      point%residual(1:n) = 0.0_dp
-      point%scale(1:n) = 0.0_dp
-      point%floor_scale(1:n) = 0.0_dp
-      do g = 1, 8
-         point%residual(1:n) = point%residual(1:n) + &
-                               problem%volume(g)*matmul(enhanced_stress(problem, point, g), problem%enhanced(:, 1:n, g))
-         point%scale(1:n) = point%scale(1:n) + problem%volume(g)*maxval(abs(point%pk2(:, g)))* &
-                            sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
-         point%floor_scale(1:n) = point%floor_scale(1:n) + problem%volume(g)*stress_floor* &
-                                  maxval(abs(point%moduli(:, :, g)))*sum(abs(problem%enhanced(:, 1:n, g)), dim=1)
-      end do
-   end subroutine evaluate_local
-
-   !> The stress the enhanced equations h = sum_g G^T S dV = 0 weigh at point g: S, or S - S0
-   !> from an initial stress S0 (module header: the initial stress is an assumed stress field of
-   !> the Hu-Washizu functional, which drives no enhanced strain).
-   pure function enhanced_stress(problem, point, g) result(stress)
-      type(local_problem_t), intent(in) :: problem
-      type(local_point_t), intent(in) :: point
-      integer, intent(in) :: g
-      real(dp) :: stress(6)
-      if (problem%prestressed) then
-         stress = point%pk2(:, g) - problem%initial(:, g)
-      else
-         stress = point%pk2(:, g)
-      end if
-   end function enhanced_stress
-
-   !> alpha <- alpha + s d along the Newton direction d = -K_aa^{-1} h. With the slope
-   !> phi(s) = d . h(alpha + s d), phi(0) = -d . K_aa d, which is negative where K_aa is
-   !> positive definite: the full step s = 1 is taken when |phi(1)| <= line_search_ratio
-   !> |phi(0)|, as in a converging Newton iteration; otherwise s is sought where |phi(s)| <=
-   !> line_search_ratio |phi(0)| by the Illinois variant of regula falsi (next_energy_trial;
-   !> s doubles up to max_step_length while phi stays negative): the line search of Crisfield,
-   !> Non-linear FE analysis of solids and structures, vol. 1, 9.3, on the local equations. For
-   !> an associated law h is the gradient of the element's incremental energy in alpha and the
-   !> root of phi its minimum along d, so the iteration cannot cycle between two alphas as the
-   !> bare Newton steps can where points switch between elastic and plastic response. Where
-   !> phi(0) >= 0 (K_aa indefinite: a finite-strain law with little hardening far from
-   !> equilibrium) the step is halved instead until |h(s)| <= (1 - s/2) |h(0)| (Armijo's rule
-   !> on |h|, for which the Newton step is a descent direction whatever K_aa; Dennis & Schnabel,
-   !> Numerical Methods for Unconstrained Optimization and Nonlinear Equations, 6.3). A trial
-   !> after which the material fails (det C <= 0 under a large plastic flow, say) counts as an
-   !> overshoot. After max_line_search_trials the last admissible trial is kept. A step from a
-   !> regularised K_aa (solve_enhanced_system) is no Newton step and is not extended: max_s = 1.
-   subroutine enhanced_line_search(name, material, problem, direction, max_s, state_old, state_new, alpha, &
-                                   point, error)
-      character(len=*), intent(in) :: name
-      class(material_t), intent(in) :: material
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: direction(:)
-      real(dp), intent(in) :: max_s   !! the longest step tried
-      real(dp), intent(in) :: state_old(:, :)
-      real(dp), intent(inout) :: state_new(:, :)
-      real(dp), intent(inout) :: alpha(:)
-      type(local_point_t), intent(inout) :: point   !! at alpha on entry, at the new alpha on return
-      type(error_t), allocatable, intent(out) :: error
-      type(local_point_t) :: trial
-      type(line_search_t) :: search
-      real(dp) :: slope, norm
-      integer :: k, n
-      logical :: failed
-      n = problem%n
-      call search%start(dot_product(direction, point%residual(1:n)), norm2(point%residual(1:n)), max_s)
-      do k = 1, max_line_search_trials
-         call try_step(name, material, problem, alpha(1:n) + search%s*direction, state_old, state_new, &
-                       trial, failed)
-         slope = 0.0_dp
-         norm = 0.0_dp
-         if (.not. failed) then
-            point = trial
-            slope = dot_product(direction, trial%residual(1:n))
-            norm = norm2(trial%residual(1:n))
-         end if
-         if (search%accepts(failed, slope, norm, k == max_line_search_trials)) exit
-      end do
-      if (search%kept_s /= search%s .or. failed) then
-         ! state_new must belong to the kept alpha, not to the last trial
-         if (.not. (search%kept_s > 0.0_dp)) search%kept_s = search%s
-         call evaluate_local(name, material, problem, alpha(1:n) + search%kept_s*direction, state_old, &
-                             state_new, point, error)
-         if (allocated(error)) return
-      end if
-      alpha(1:n) = alpha(1:n) + search%kept_s*direction
-   end subroutine enhanced_line_search
-
-   !> evaluate_local at alpha that reports the material's failure as `failed`.
-   subroutine try_step(name, material, problem, alpha, state_old, state_new, trial, failed)
-      character(len=*), intent(in) :: name
-      class(material_t), intent(in) :: material
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: alpha(:)
-      real(dp), intent(in) :: state_old(:, :)
-      real(dp), intent(inout) :: state_new(:, :)
-      type(local_point_t), intent(out) :: trial
-      logical, intent(out) :: failed
-      type(error_t), allocatable :: trial_error
-      call evaluate_local(name, material, problem, alpha, state_old, state_new, trial, trial_error)
-      failed = allocated(trial_error)
-   end subroutine try_step
-
-   !> Start a line search (see enhanced_line_search): first trial s = 1.
-   pure subroutine line_search_start(self, slope0, norm0, max_s)
-      class(line_search_t), intent(inout) :: self
-      real(dp), intent(in) :: slope0   !! phi(0) = d . h(alpha)
-      real(dp), intent(in) :: norm0    !! |h(alpha)|
-      real(dp), intent(in) :: max_s    !! the longest step tried
-      self%slope0 = slope0
-      self%norm0 = norm0
-      self%energy = slope0 < 0.0_dp
-      self%low = 0.0_dp
-      self%slope_low = slope0
-      self%high = 0.0_dp   ! none yet
-      self%slope_high = huge(1.0_dp)
-      self%side = 0
-      self%s = 1.0_dp
-      self%kept_s = 0.0_dp
-      self%max_s = max_s
-   end subroutine line_search_start
-
-   !> Judge the trial at s: true when it ends the search (then kept_s = s), else the next s.
-   !> `failed`: the material failed at s; `slope` = phi(s), `norm` = |h(s)|; `last`: no trial
-   !> follows (the last admissible one is kept).
-   logical function line_search_accepts(self, failed, slope, norm, last) result(done)
-      class(line_search_t), intent(inout) :: self
-      logical, intent(in) :: failed, last
-      real(dp), intent(in) :: slope, norm
-      if (.not. failed) self%kept_s = self%s
-      if (self%energy) then
-         done = .not. failed .and. (abs(slope) <= line_search_ratio*abs(self%slope0) .or. &
-                                    (slope < 0.0_dp .and. self%s >= self%max_s))
-      else
-         done = .not. failed .and. norm <= (1.0_dp - 0.5_dp*self%s)*self%norm0
-      end if
-      if (done .or. (last .and. self%kept_s > 0.0_dp)) then
-         done = .true.
-      else if (self%energy) then
-         call next_energy_trial(self, failed, slope)
-      else
-         self%s = 0.5_dp*self%s
-      end if
-   end function line_search_accepts
-
-   !> The next s of the regula falsi on phi: the bracket [low, high] narrowed by the trial at
-   !> s (phi(s) > 0 or a failed material: s is the new high; else the new low), the Illinois
-   !> rule halving the slope of an end kept twice, the new s kept bracket_guard of the width
-   !> away from both ends (after a failed material the low end + bracket_guard width: where
-   !> phi rises by orders of magnitude within the bracket the trials shrink it tenfold each);
-   !> without a high end yet the step doubles.
-   pure subroutine next_energy_trial(self, failed, slope)
-      class(line_search_t), intent(inout) :: self
-      logical, intent(in) :: failed
-      real(dp), intent(in) :: slope
-      real(dp) :: next, width
-      if (failed .or. slope > 0.0_dp) then
-         if (self%side == 1 .and. .not. failed) self%slope_low = 0.5_dp*self%slope_low
-         self%high = self%s
-         self%slope_high = merge(huge(1.0_dp), slope, failed)
-         self%side = 1
-      else
-         if (self%side == -1 .and. self%slope_high < huge(1.0_dp)) self%slope_high = 0.5_dp*self%slope_high
-         self%low = self%s
-         self%slope_low = slope
-         self%side = -1
-      end if
-      if (.not. (self%high > self%low)) then
-         self%s = min(2.0_dp*self%s, self%max_s)
-         return
-      end if
-      width = self%high - self%low
-      next = self%low + bracket_guard*width
-      if (self%slope_high < huge(1.0_dp)) next = self%low - self%slope_low*width/(self%slope_high - self%slope_low)
-      self%s = min(max(next, self%low + bracket_guard*width), self%high - bracket_guard*width)
-   end subroutine next_energy_trial
-
-
-   !> K_aa = sum_g G^T C G dV.
-   pure subroutine enhanced_stiffness(problem, moduli, stiffness)
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: moduli(6, 6, 8)
-      real(dp), intent(out) :: stiffness(:, :)
-      real(dp) :: weighted(6, max_eas_modes)
-      integer :: g, n
-      n = problem%n
-      stiffness(1:n, 1:n) = 0.0_dp
-      do g = 1, 8
-         weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
-         stiffness(1:n, 1:n) = stiffness(1:n, 1:n) + matmul(transpose(problem%enhanced(:, 1:n, g)), &
-                                                           weighted(:, 1:n))
-      end do
-   end subroutine enhanced_stiffness
-
-   !> Solve K_aa X = B (B <- X), K_aa = sum_g G^T C G dV from the points' moduli C
-   !> (solve_scaled). Where K_aa is singular (solve_scaled's pivot test) the system is solved
-   !> with K_aa + weight K_aa^el, K_aa^el = sum_g G^T D G dV from the law's elastic moduli D.
-   pure subroutine solve_enhanced_system(problem, moduli, weight, rhs, singular, regularised)
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: moduli(6, 6, 8)
-      real(dp), intent(in) :: weight
-      real(dp), intent(inout) :: rhs(:, :)
-      logical, intent(out) :: singular
-      logical, intent(out), optional :: regularised   !! K_aa + weight K_aa^el was solved
-      real(dp) :: stiffness(problem%n, problem%n), matrix(problem%n, problem%n), elastic(problem%n, problem%n)
-      real(dp) :: solved(size(rhs, 1), size(rhs, 2))
-      call enhanced_stiffness(problem, moduli, stiffness)
-      matrix = stiffness
-      solved = rhs
-      call solve_scaled(matrix, solved, singular)
-      if (present(regularised)) regularised = singular
-      if (.not. singular) then
-         rhs = solved
-         return
-      end if
-      call enhanced_stiffness(problem, spread(problem%elastic, 3, 8), elastic)
-      matrix = stiffness + weight*elastic
-      call solve_scaled(matrix, rhs, singular)
-   end subroutine solve_enhanced_system
-
-   !> Solve K_aa X = B (B <- X) with K_aa scaled symmetrically by D = diag(|K_aa|)^{-1/2}:
-   !> (D K_aa D) (D^{-1} X) = D B. The enhanced modes of a thin, long element differ in size by
-   !> (thickness / length)^2 in G and by its square in K_aa (1e-9 at an aspect ratio of 150),
-   !> which the scaling removes before the pivoting and the singularity test of solve_in_place
-   !> see them (Jacobi equilibration: Golub & Van Loan, Matrix Computations, 3.5.2).
-   pure subroutine solve_scaled(stiffness, rhs, singular)
-      real(dp), intent(inout) :: stiffness(:, :)   !! K_aa, destroyed
-      real(dp), intent(inout) :: rhs(:, :)
-      logical, intent(out) :: singular
-      real(dp) :: factor(size(stiffness, 1))
-      integer :: i
-      singular = .true.
-      do i = 1, size(stiffness, 1)
-         if (.not. (abs(stiffness(i, i)) > 0.0_dp)) return
-         factor(i) = 1.0_dp/sqrt(abs(stiffness(i, i)))
-      end do
-      do i = 1, size(stiffness, 1)
-         stiffness(:, i) = factor*stiffness(:, i)*factor(i)
-         rhs(i, :) = factor(i)*rhs(i, :)
-      end do
-      call solve_in_place(stiffness, rhs, singular)
-      if (singular) return
-      do i = 1, size(stiffness, 1)
-         rhs(i, :) = factor(i)*rhs(i, :)
-      end do
-   end subroutine solve_scaled
 
    !> fint_a = sum_g (F S) Grad N_a dV (F = I under linear kinematics, S = sigma).
    pure subroutine internal_force(dn_dx, volume, deformation, pk2, fint)
@@ -772,44 +373,6 @@ contains
       end do
       if (symmetric) call mirror_upper_blocks(tangent)
    end subroutine tangent_total_lagrangian
-
-   !> Static condensation K <- K - K_ua K_aa^{-1} K_au with K_ua = sum_g B^T C G dV,
-   !> K_au = sum_g G^T C B dV and K_aa = sum_g G^T C G dV at the converged alpha (for a
-   !> symmetric C, K_au = K_ua^T).
-   subroutine condense(name, problem, dn_dx, deformation, moduli, symmetric, tangent, error)
-      character(len=*), intent(in) :: name
-      type(local_problem_t), intent(in) :: problem
-      real(dp), intent(in) :: dn_dx(3, 8, 8), deformation(3, 3, 8), moduli(6, 6, 8)
-      logical, intent(in) :: symmetric
-      real(dp), intent(inout) :: tangent(:, :)
-      type(error_t), allocatable, intent(out) :: error
-      real(dp) :: coupling(24, max_eas_modes), solved(max_eas_modes, 24)
-      real(dp) :: weighted(6, max_eas_modes), b_nl(6, 3, 8)
-      integer :: g, a, n
-      logical :: singular
-      n = problem%n
-      coupling(:, 1:n) = 0.0_dp
-      solved(1:n, :) = 0.0_dp   ! K_au, accumulated for an unsymmetric C
-      do g = 1, 8
-         call nonlinear_b(deformation(:, :, g), dn_dx(:, :, g), b_nl)
-         weighted(:, 1:n) = problem%volume(g)*matmul(moduli(:, :, g), problem%enhanced(:, 1:n, g))
-         do a = 1, 8
-            coupling(3*a - 2:3*a, 1:n) = coupling(3*a - 2:3*a, 1:n) + &
-                                         matmul(transpose(b_nl(:, :, a)), weighted(:, 1:n))
-            if (.not. symmetric) solved(1:n, 3*a - 2:3*a) = solved(1:n, 3*a - 2:3*a) + &
-                                 problem%volume(g)*matmul(transpose(problem%enhanced(:, 1:n, g)), &
-                                                          matmul(moduli(:, :, g), b_nl(:, :, a)))
-         end do
-      end do
-      if (symmetric) solved(1:n, :) = transpose(coupling(:, 1:n))
-      call solve_enhanced_system(problem, moduli, merge(condensation_regularisation, local_regularisation, symmetric), &
-                                 solved(1:n, :), singular)
-      if (singular) then
-         call fatal_error(error, name//': singular enhanced-strain stiffness K_aa')
-         return
-      end if
-      tangent(1:24, 1:24) = tangent(1:24, 1:24) - matmul(coupling(:, 1:n), solved(1:n, :))
-   end subroutine condense
 
    !> Copy the upper 3x3 blocks (a < b) to the lower triangle as their transposes.
    pure subroutine mirror_upper_blocks(tangent)

@@ -25,7 +25,20 @@
 !>   G_ab = (Grad N_a . S_2x2 . Grad N_b) I_2 + [axisymmetric] S_33 N_a N_b / R^2 on (x, x)
 !>   (d^2 E_33 / du_ax du_bx = N_a N_b / R^2; Bathe 6.3.4).
 !> The Cauchy stress is F S F^T / det F (frix_solid_kinematics). The element extends
-!> frix_cell_solid's (cell, shape tables, node and point counts; no enhanced strains).
+!> frix_cell_solid's (cell, shape tables, node and point counts).
+!>
+!> Enhanced assumed strains (QUAD4 only, n_eas = 4): the strain passed to the material is
+!> E(u) + G_g alpha (eps + eps~ under linear kinematics, the Green-Lagrange strain E + E~ under
+!> total Lagrangian kinematics, as frix_hex8), G_g = (dV_c / dV_g) T0^{-T} M(xi_g) with the
+!> modes M of Simo & Rifai (1990, IJNME 29: E11 ~ xi, E22 ~ eta, E12 ~ xi, eta;
+!> frix_eas_modes%plane_eas_modes), T0^{-T} the push of natural strains by P = J0^{-1}, J0 the
+!> Jacobian at the centre xi = 0 (Simo & Rifai's constant-Jacobian transformation, P_33 = 1),
+!> and dV_c / dV_g = detJ0 m(R0) / (detJ_g m(R_g)), m = t or 2 pi R, R0 the centre's radius.
+!> In plane strain this is Simo & Rifai's detJ0 / detJ; in axisymmetry the measure ratio keeps
+!> int G dV = detJ0 m(R0) T0^{-T} sum_g M(xi_g) w_g = 0 (Simo & Rifai's condition for the patch
+!> test, here on the ring's volume element). The out-of-plane / hoop strain E_33 and the
+!> shears 13, 23 are not enhanced. alpha is solved locally and the tangent condensed by
+!> frix_enhanced_strain.
 !>
 !> Edge pressure (face_pressure): on an edge (LINE2 cell, its own 2-point Gauss rule) listed
 !> counter-clockwise around the element, the outward normal times the length element is
@@ -39,6 +52,10 @@ module frix_plane_solid
    use frix_strings, only: to_string
    use frix_material, only: material_t
    use frix_element, only: kinematics_total_lagrangian
+   use frix_vector_algebra, only: invert3
+   use frix_eas_modes, only: plane_eas_modes, strain_push_matrix
+   use frix_enhanced_strain, only: local_problem_t, start_local_problem, set_enhanced_operator, enhanced_response, &
+                                   condense, check_deformation
    use frix_cell_solid, only: cell_solid_t, new_cell_solid
    use frix_reference_cell, only: reference_cell_t
    use frix_solid_kinematics, only: compatible_kinematics, deformed_material_pass, nonlinear_b, point_stresses, &
@@ -55,7 +72,9 @@ module frix_plane_solid
    type, extends(cell_solid_t) :: plane_solid_t
       logical :: axisymmetric = .false.
       real(dp) :: thickness = 1.0_dp                     !! t (length unit), plane strain only
+      integer :: n_eas = 0                               !! enhanced strain parameters: 0 or 4 (QUAD4)
    contains
+      procedure :: n_enhanced => plane_solid_n_enhanced
       procedure :: evaluate => plane_solid_evaluate
       procedure :: volume_weights => plane_solid_volume_weights
       procedure :: point_positions => plane_solid_point_positions
@@ -74,19 +93,29 @@ module frix_plane_solid
 contains
 
    !> The plane element called `name` on the 2D `cell`: axisymmetric, or plane strain of
-   !> `thickness` (length unit, > 0; default 1).
-   function new_plane_solid(name, cell, kinematics, axisymmetric, thickness) result(element)
+   !> `thickness` (length unit, > 0; default 1), with `n_eas` enhanced strain parameters (0 or 4
+   !> on QUAD4, checked by the caller; default 0; the name gets '-EAS<n>').
+   function new_plane_solid(name, cell, kinematics, axisymmetric, thickness, n_eas) result(element)
       character(len=*), intent(in) :: name
       class(reference_cell_t), intent(in) :: cell
       integer, intent(in) :: kinematics
       logical, intent(in) :: axisymmetric
       real(dp), intent(in), optional :: thickness
+      integer, intent(in), optional :: n_eas
       type(plane_solid_t) :: element
       element%cell_solid_t = new_cell_solid(cell, kinematics)
       element%name = name
       element%axisymmetric = axisymmetric
       if (present(thickness)) element%thickness = thickness
+      if (present(n_eas)) element%n_eas = n_eas
+      if (element%n_eas > 0) element%name = name//'-EAS'//to_string(element%n_eas)
    end function new_plane_solid
+
+   pure function plane_solid_n_enhanced(self) result(n)
+      class(plane_solid_t), intent(in) :: self
+      integer :: n
+      n = self%n_eas
+   end function plane_solid_n_enhanced
 
    !> J^{-1} dN/dxi (2, n_nodes), detJ and R at point g.
    pure subroutine point_jacobian(self, coords, g, dn_dx, det, radius)
@@ -210,7 +239,7 @@ contains
       class(material_t), intent(in) :: material
       real(dp), intent(in) :: coords(:, :)       !! (3, n_nodes) reference coordinates (z not read)
       real(dp), intent(in) :: u(:, :)            !! (3, n_nodes) total displacements (z not read)
-      real(dp), intent(inout) :: alpha(:)        !! unused (no enhanced strains)
+      real(dp), intent(inout) :: alpha(:)        !! (n_eas) enhanced strain parameters
       real(dp), intent(in) :: state_old(:, :)    !! (n_state, n_points)
       real(dp), intent(inout) :: state_new(:, :) !! (n_state, n_points)
       real(dp), intent(out) :: fint(:)           !! (3 n_nodes), z entries 0
@@ -220,6 +249,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(dp), intent(in), optional :: initial_stress(:, :)   !! (6, n_points) sigma0 (element_t)
       type(point_geometry_t) :: geometry
+      type(local_problem_t) :: problem
       real(dp), allocatable :: planar(:, :), deformation(:, :, :), total(:, :), pk2(:, :), moduli(:, :, :)
       integer :: g, n, n_points
       logical :: total_lagrangian
@@ -235,7 +265,15 @@ contains
       do g = 1, n_points
          call point_kinematics(self, geometry, g, planar, total_lagrangian, deformation(:, :, g), total(:, g))
       end do
-      if (present(initial_stress)) then
+      if (self%n_eas > 0) then
+         if (present(initial_stress)) then
+            call start_local_problem(problem, self%n_eas, total_lagrangian, geometry%volume, total, initial_stress)
+         else
+            call start_local_problem(problem, self%n_eas, total_lagrangian, geometry%volume, total)
+         end if
+         call enhanced_pass(self, material, coords, geometry, deformation, problem, state_old, state_new, alpha, &
+                            total, pk2, moduli, error)
+      else if (present(initial_stress)) then
          call deformed_material_pass(self%name, material, total_lagrangian, deformation, total, state_old, state_new, &
                                      pk2, moduli, error, initial_stress)
       else
@@ -244,9 +282,89 @@ contains
       end if
       if (allocated(error)) return
       call force_and_tangent(self, geometry, deformation, pk2, moduli, total_lagrangian, fint, tangent)
+      if (self%n_eas > 0 .and. present(tangent)) then
+         call condensed_tangent(self, material, geometry, deformation, problem, moduli, tangent, error)
+         if (allocated(error)) return
+      end if
       if (present(stress)) call point_stresses(total_lagrangian, deformation, pk2, stress)
       if (present(strain)) strain(:, 1:n_points) = total
    end subroutine plane_solid_evaluate
+
+   !> The enhanced response (module header): det F checked (total Lagrangian), G set, alpha
+   !> solved from the alpha passed in; total, pk2, moduli at the converged alpha.
+   subroutine enhanced_pass(self, material, coords, geometry, deformation, problem, state_old, state_new, alpha, &
+                            total, pk2, moduli, error)
+      class(plane_solid_t), intent(in) :: self
+      class(material_t), intent(in) :: material
+      real(dp), intent(in) :: coords(:, :)
+      type(point_geometry_t), intent(in) :: geometry
+      real(dp), intent(in) :: deformation(:, :, :)
+      type(local_problem_t), intent(inout) :: problem
+      real(dp), intent(in) :: state_old(:, :)
+      real(dp), intent(inout) :: state_new(:, :)
+      real(dp), intent(inout) :: alpha(:)
+      real(dp), intent(out) :: total(:, :), pk2(:, :), moduli(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      if (size(alpha) < self%n_eas) then
+         call fatal_error(error, self%name//': alpha has '//to_string(size(alpha))//' entries, '// &
+                          to_string(self%n_eas)//' needed')
+         return
+      end if
+      if (problem%finite) then
+         call check_deformation(self%name, deformation, error)
+         if (allocated(error)) return
+      end if
+      call enhanced_operators(self, coords, geometry, problem, error)
+      if (allocated(error)) return
+      call enhanced_response(self%name, material, problem, state_old, state_new, alpha, total, pk2, moduli, error)
+   end subroutine enhanced_pass
+
+   !> G_g = (dV_c / dV_g) T0^{-T} M(xi_g) at every point (module header), T0^{-T} from
+   !> P = J0^{-1} in the plane and P_33 = 1 (frix_eas_modes%strain_push_matrix).
+   subroutine enhanced_operators(self, coords, geometry, problem, error)
+      class(plane_solid_t), intent(in) :: self
+      real(dp), intent(in) :: coords(:, :)
+      type(point_geometry_t), intent(in) :: geometry
+      type(local_problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: shape(self%cell%n_nodes), derivatives(2, self%cell%n_nodes), jacobian0(3, 3), inverse0(3, 3)
+      real(dp) :: det0, centre_measure, push(6, 6), modes(6, self%n_eas)
+      integer :: g, n
+      n = self%cell%n_nodes
+      call self%cell%shape_functions([0.0_dp, 0.0_dp], shape, derivatives)
+      jacobian0 = 0.0_dp
+      jacobian0(1:2, 1:2) = matmul(derivatives, transpose(coords(1:2, 1:n)))
+      jacobian0(3, 3) = 1.0_dp
+      call invert3(jacobian0, inverse0, det0)
+      if (.not. (det0 > 0.0_dp)) then
+         call fatal_error(error, self%name//': non-positive Jacobian determinant '//to_string(det0)// &
+                          ' at the element centre')
+         return
+      end if
+      call strain_push_matrix(inverse0, push)
+      centre_measure = det0*section_measure(self, dot_product(shape, coords(1, 1:n)))
+      do g = 1, size(geometry%volume)
+         call plane_eas_modes(self%n_eas, self%cell%points(:, g), modes)
+         call set_enhanced_operator(problem, g, centre_measure*self%cell%weights(g)/geometry%volume(g), push, modes)
+      end do
+   end subroutine enhanced_operators
+
+   !> The tangent condensed over alpha (frix_enhanced_strain%condense) with the blocks plane_b.
+   subroutine condensed_tangent(self, material, geometry, deformation, problem, moduli, tangent, error)
+      class(plane_solid_t), intent(in) :: self
+      class(material_t), intent(in) :: material
+      type(point_geometry_t), intent(in) :: geometry
+      real(dp), intent(in) :: deformation(:, :, :), moduli(:, :, :)
+      type(local_problem_t), intent(in) :: problem
+      real(dp), intent(inout) :: tangent(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp) :: b_blocks(6, 3, self%cell%n_nodes, size(geometry%volume))
+      integer :: g
+      do g = 1, size(geometry%volume)
+         call plane_b(self, geometry, g, deformation(:, :, g), b_blocks(:, :, :, g))
+      end do
+      call condense(self%name, problem, b_blocks, moduli, material%symmetric_tangent(), tangent, error)
+   end subroutine condensed_tangent
 
    !> fint_a = sum_g B_NL,a^T S dV0 and, if present, K = sum_g (B_NL^T C B_NL + [total
    !> Lagrangian] G) dV0 (module header).

@@ -1,13 +1,16 @@
 !> The deck constructors of the plane elements (frix_plane_solid), as the element registry
 !> calls them: shape keyword, options from a property list and the kinematics of the element
 !> line. Kept apart from frix_plane_solid so that the formulation file holds the mechanics only.
-!>   PLANE4   QUAD4, plane strain; option THICKNESS t (length unit, > 0, default 1)
-!>   PLANE3   TRI3, plane strain; option THICKNESS
-!>   AXISYM4  QUAD4, axisymmetric (x = radius, y = axis); no options
-!>   AXISYM3  TRI3, axisymmetric; no options
+!>   PLANE4   QUAD4, plane strain; options THICKNESS t (length unit, > 0, default 1) and
+!>            EAS 0 (default) or 4 (Simo & Rifai's enhanced strains, frix_plane_solid)
+!>   PLANE3   TRI3, plane strain; option THICKNESS (EAS 0 only)
+!>   AXISYM4  QUAD4, axisymmetric (x = radius, y = axis); option EAS 0 (default) or 4
+!>   AXISYM3  TRI3, axisymmetric (EAS 0 only)
 module frix_plane_solid_options
    use frix_kinds, only: dp
    use frix_error, only: error_t, fatal_error
+   use frix_strings, only: to_string
+   use frix_eas_modes, only: plane_eas_counts
    use frix_property_list, only: property_list_t, property_spec_t, spec_names
    use frix_element, only: element_t
    use frix_reference_cell, only: reference_cell_t
@@ -17,15 +20,17 @@ module frix_plane_solid_options
    implicit none
    private
 
-   public :: plane_strain_options, plane4_from_options, plane3_from_options, axisym4_from_options, &
+   public :: plane_strain_options, axisymmetric_options, plane4_from_options, plane3_from_options, axisym4_from_options, &
              axisym3_from_options
 
 contains
 
-   !> The options of the plane strain shapes: THICKNESS, a length > 0.
+   !> The options of the plane strain shapes: THICKNESS, a length > 0, and EAS.
    function plane_strain_options() result(specs)
       type(property_spec_t), allocatable :: specs(:)
-      allocate (specs(1))
+      type(property_spec_t) :: eas(1)
+      eas = axisymmetric_options()
+      allocate (specs(2))
       specs(1)%name = 'THICKNESS'
       specs(1)%what = 'a thickness (length)'
       specs(1)%bounded = .true.
@@ -34,7 +39,17 @@ contains
       specs(1)%bound_message = 'the thickness must be > 0'
       specs(1)%has_default = .true.
       specs(1)%default = 1.0_dp
+      specs(2) = eas(1)
    end function plane_strain_options
+
+   !> The options of the axisymmetric shapes: EAS, a whole number (default 0).
+   function axisymmetric_options() result(specs)
+      type(property_spec_t), allocatable :: specs(:)
+      allocate (specs(1))
+      specs(1)%name = 'EAS'
+      specs(1)%what = 'an EAS parameter count'
+      specs(1)%whole = .true.
+   end function axisymmetric_options
 
    !> PLANE4: QUAD4, plane strain.
    subroutine plane4_from_options(options, kinematics, element, error)
@@ -72,7 +87,8 @@ contains
       call axisymmetric_from_options('AXISYM3', new_tri3_cell(), options, kinematics, element, error)
    end subroutine axisym3_from_options
 
-   !> The plane strain element `name` on `cell` with the THICKNESS of `options` (default 1).
+   !> The plane strain element `name` on `cell` with the THICKNESS (default 1) and EAS count
+   !> (default 0) of `options`.
    subroutine plane_strain_from_options(name, cell, options, kinematics, element, error)
       character(len=*), intent(in) :: name
       class(reference_cell_t), intent(in) :: cell
@@ -82,6 +98,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(property_spec_t), allocatable :: specs(:)
       real(dp) :: thickness
+      integer :: n_eas
       logical :: found
       specs = plane_strain_options()
       call options%check_names(spec_names(specs), error)
@@ -92,10 +109,13 @@ contains
          call fatal_error(error, 'element shape '//name//': '//trim(specs(1)%bound_message))
          return
       end if
-      allocate (element, source=new_plane_solid(name, cell, kinematics, axisymmetric=.false., thickness=thickness))
+      call eas_count(name, cell, options, n_eas, error)
+      if (allocated(error)) return
+      allocate (element, source=new_plane_solid(name, cell, kinematics, axisymmetric=.false., thickness=thickness, &
+                                                n_eas=n_eas))
    end subroutine plane_strain_from_options
 
-   !> The axisymmetric element `name` on `cell`; an error if `options` holds any.
+   !> The axisymmetric element `name` on `cell` with the EAS count of `options` (default 0).
    subroutine axisymmetric_from_options(name, cell, options, kinematics, element, error)
       character(len=*), intent(in) :: name
       class(reference_cell_t), intent(in) :: cell
@@ -103,11 +123,38 @@ contains
       integer, intent(in) :: kinematics
       class(element_t), allocatable, intent(out) :: element
       type(error_t), allocatable, intent(out) :: error
-      if (options%count() > 0) then
-         call fatal_error(error, 'element shape '//name//' takes no options')
+      integer :: n_eas
+      call options%check_names(spec_names(axisymmetric_options()), error)
+      if (allocated(error)) return
+      call eas_count(name, cell, options, n_eas, error)
+      if (allocated(error)) return
+      allocate (element, source=new_plane_solid(name, cell, kinematics, axisymmetric=.true., n_eas=n_eas))
+   end subroutine axisymmetric_from_options
+
+   !> The EAS option of `options` (0 when not given): 0 or 4 on a QUAD4 cell, 0 otherwise
+   !> (frix_eas_modes%plane_eas_counts); another count is an error listing the valid ones.
+   subroutine eas_count(name, cell, options, n_eas, error)
+      character(len=*), intent(in) :: name
+      class(reference_cell_t), intent(in) :: cell
+      type(property_list_t), intent(in) :: options
+      integer, intent(out) :: n_eas
+      type(error_t), allocatable, intent(out) :: error
+      logical :: found
+      character(len=:), allocatable :: valid
+      integer :: i
+      call options%take_integer('EAS', n_eas, found, error, default=0)
+      if (allocated(error)) return
+      valid = '0'
+      if (cell%n_nodes == 4) then
+         do i = 2, size(plane_eas_counts)
+            valid = valid//', '//to_string(plane_eas_counts(i))
+         end do
+         if (any(plane_eas_counts == n_eas)) return
+      else if (n_eas == 0) then
          return
       end if
-      allocate (element, source=new_plane_solid(name, cell, kinematics, axisymmetric=.true.))
-   end subroutine axisymmetric_from_options
+      call fatal_error(error, 'element shape '//name//': unsupported number of EAS parameters '// &
+                       to_string(n_eas)//' (valid: '//valid//')')
+   end subroutine eas_count
 
 end module frix_plane_solid_options

@@ -83,4 +83,5 @@ def deck(variant, option):
 
 if __name__ == "__main__":
     deck("plain", "")
+    deck("eas4", "EAS 4")
 

@@ -56,3 +56,38 @@ add_test(NAME plane_cook_against_slab
          COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/cook_plane2d_plain_16x16.dck
                  ${PROJECT_SOURCE_DIR}/inputs/verification/v2_cook/cook_plane_hex8_16x16.dck 1e-9 u2_n3 u2_n31)
 set_tests_properties(plane_cook_against_slab PROPERTIES LABELS regression TIMEOUT ${scaled_60})
+# V2 Cook's membrane 16 x 16 with PLANE4 EAS 4 (cook_plane2d_eas4_16x16.dck, make_cook_deck.py):
+# u_y(C) against 23.96 (Simo & Rifai 1990; docs/verification.md V2), 2 % (measured 23.883, -0.32 %;
+# plain PLANE4 23.43), and against the HEX8 EAS 9 slab with u_z = 0 on the same nodes
+# (cook_plane_eas9_16x16.dck: one layer without variation along z, whose in-plane modes are
+# EAS 4's; measured the same to 5e-14).
+add_test(NAME plane_cook_eas4
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/cook_plane2d_eas4_16x16.dck ${plane_check}
+                 history u2_n31=23.96:0.02)
+add_test(NAME plane_cook_eas4_against_slab
+         COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/cook_plane2d_eas4_16x16.dck
+                 ${PROJECT_SOURCE_DIR}/inputs/verification/v2_cook/cook_plane_eas9_16x16.dck 1e-9 u2_n3 u2_n31)
+# V4 thick cylinder, perfectly plastic, to the limit load by load control (the HEX8 deck
+# cylinder_plastic_eas9.dck's curve and steps): the last converged pressure against
+# p_limit = (2/sqrt 3) sigma_y ln(b/a) = 192.0906 (Hill 1950, ch. V), 2 %; PLANE4 EAS 4 on the
+# quarter ring (ring_plane_plastic_eas4.dck, make_ring_deck.py; measured 192.127, +0.02 %) and
+# AXISYM4 EAS 4 on the tube slice (measured 192.127). The plain PLANE4 and AXISYM4 lock: both
+# carry the whole curve to 1.05 p_limit.
+add_test(NAME plane_ring_plastic_eas4
+         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/verification/check_cylinder.py run ${FRIX_BIN}
+                 ${plane_dir}/ring_plane_plastic_eas4.dck --curve 0,0,1,150,2,180,3,201.70 --allow-stop
+                 --limit 192.0906 0.02 "limit pressure vs (2/sqrt 3) sigma_y ln(b/a)")
+add_test(NAME plane_tube_axisymmetric_plastic_eas4
+         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/verification/check_cylinder.py run ${FRIX_BIN}
+                 ${plane_dir}/tube_axisym_plastic_eas4.dck --curve 0,0,1,150,2,180,3,201.70 --allow-stop
+                 --limit 192.0906 0.02 "limit pressure vs (2/sqrt 3) sigma_y ln(b/a)")
+set_tests_properties(plane_cook_eas4 plane_cook_eas4_against_slab plane_ring_plastic_eas4
+                     plane_tube_axisymmetric_plastic_eas4
+                     PROPERTIES LABELS "regression;plasticity" TIMEOUT ${scaled_60})
+# The EAS option of the plane shapes: a count other than 0 or 4 on a quadrilateral, and any
+# count but 0 on a triangle, are errors naming the deck line and the valid counts.
+foreach(name error_plane4_eas3 error_axisym3_eas4)
+  add_test(NAME plane_${name}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/errors/check_error_case.sh ${FRIX_BIN} ${plane_dir}/${name}.dck)
+  set_tests_properties(plane_${name} PROPERTIES LABELS errors)
+endforeach()

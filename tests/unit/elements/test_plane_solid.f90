@@ -63,7 +63,12 @@ contains
                new_unittest('edge pressure follower tangent', test_edge_pressure_tangent), &
                new_unittest('3D face_pressure is pressure_load', test_face_pressure_3d), &
                new_unittest('axisymmetric point at R <= 0 is an error', test_radius_error), &
-               new_unittest('registry shapes and options', test_registry)]
+               new_unittest('registry shapes and options', test_registry), &
+               new_unittest('EAS4 tangent, elastic and plastic, alpha re-solved', test_eas_tangent), &
+               new_unittest('EAS4 patch: constant strain, alpha = 0, exact stress', test_eas_patch), &
+               new_unittest('EAS4 pure bending of a rectangle exact', test_eas_bending), &
+               new_unittest('EAS options of the registry', test_eas_registry), &
+               new_unittest('EAS4 at rest under a geostatic initial stress: alpha = 0', test_eas_initial_stress)]
    end subroutine collect_plane_solid
 
    !> The element on QUAD4 (`quad`) or TRI3, axisymmetric or plane strain of thickness 0.7.
@@ -79,6 +84,15 @@ contains
                                    axisymmetric, thickness)
       end if
    end function plane
+
+   !> The QUAD4 element with 4 enhanced strain parameters, axisymmetric or plane strain (t = 0.7).
+   function enhanced(axisymmetric, kinematics) result(element)
+      logical, intent(in) :: axisymmetric
+      integer, intent(in) :: kinematics
+      type(plane_solid_t) :: element
+      element = new_plane_solid(merge('AXISYM4', 'PLANE4 ', axisymmetric), new_quad4_cell(), kinematics, &
+                                axisymmetric, thickness, n_eas=4)
+   end function enhanced
 
    pure function coords_of(quad) result(coords)
       logical, intent(in) :: quad
@@ -493,5 +507,183 @@ contains
       call create_element('AXISYM3', options, kinematics_linear, element, create_error)
       call check(error, allocated(create_error), 'AXISYM3 accepts THICKNESS')
    end subroutine test_registry
+
+   !> The condensed tangent of PLANE4/AXISYM4 EAS 4 against central differences of fint with
+   !> alpha re-solved (check_tangent): Hooke (linear), St. Venant-Kirchhoff and neo-Hookean
+   !> (total Lagrangian), von Mises plasticity with hardening (both kinematics; points yield).
+   subroutine test_eas_tangent(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(material_t), allocatable :: mises
+      type(error_t), allocatable :: law_error
+      integer :: k
+      logical :: axisymmetric
+      call create_material('MAT_3DMisesPlastic', [character(len=6) :: 'YOUNG', 'NUE', 'SIGY', 'SIGINF', 'DELTA', &
+                           'KINH'], [young, poisson, 2.0_dp, 3.0_dp, 50.0_dp, 20.0_dp], mises, law_error)
+      call check(error, .not. allocated(law_error), 'von Mises law')
+      if (allocated(error)) return
+      do k = 0, 1
+         axisymmetric = k == 1
+         call check_tangent(enhanced(axisymmetric, kinematics_linear), new_linear_elastic(young, poisson, 0.0_dp), &
+                            quad_coords, 0.01_dp*pattern, error)
+         if (allocated(error)) return
+         call check_tangent(enhanced(axisymmetric, kinematics_total_lagrangian), &
+                            new_saint_venant_kirchhoff(young, poisson, 0.0_dp), quad_coords, 0.15_dp*pattern, error)
+         if (allocated(error)) return
+         call check_tangent(enhanced(axisymmetric, kinematics_total_lagrangian), new_neo_hookean(young, poisson, 0.0_dp), &
+                            quad_coords, 0.15_dp*pattern, error)
+         if (allocated(error)) return
+         call check_tangent(enhanced(axisymmetric, kinematics_linear), mises, quad_coords, 0.01_dp*pattern, error, &
+                            plastic=.true.)
+         if (allocated(error)) return
+         call check_tangent(enhanced(axisymmetric, kinematics_total_lagrangian), mises, quad_coords, 0.15_dp*pattern, &
+                            error, plastic=.true.)
+         if (allocated(error)) return
+      end do
+   end subroutine test_eas_tangent
+
+   !> A constant strain state on the distorted quad: u = A X + c in plane strain (both
+   !> kinematics) and u_r = c R in axisymmetry. int G dV = 0 makes h = 0 at alpha = 0: the
+   !> local solve from alpha = 1e-3 returns alpha = 0 (to round-off) and fint and the strains
+   !> equal those of the plain element.
+   subroutine test_eas_patch(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: gradient(2, 2) = reshape([0.01_dp, -0.003_dp, 0.004_dp, 0.02_dp], [2, 2])
+      type(plane_solid_t) :: plain, element
+      real(dp) :: u(3, 4), fint(12), plain_fint(12), strain(6, 4), plain_strain(6, 4), alpha(4), none(0)
+      real(dp) :: state_old(0, 4), state_new(0, 4)
+      integer :: k, kinematics
+      do k = 0, 1
+         do kinematics = kinematics_linear, kinematics_total_lagrangian
+            u = 0.0_dp
+            if (k == 0) then
+               u(1:2, :) = matmul(gradient, quad_coords(1:2, :)) + spread([0.05_dp, -0.02_dp], 2, 4)
+            else
+               u(1, :) = 0.01_dp*quad_coords(1, :)
+            end if
+            element = enhanced(k == 1, kinematics)
+            plain = plane(.true., k == 1, kinematics)
+            alpha = 1.0e-3_dp
+            call element%evaluate(new_linear_elastic(young, poisson, 0.0_dp), quad_coords, u, alpha, state_old, &
+                                  state_new, fint, strain=strain, error=error)
+            if (allocated(error)) return
+            call plain%evaluate(new_linear_elastic(young, poisson, 0.0_dp), quad_coords, u, none, state_old, &
+                                state_new, plain_fint, strain=plain_strain, error=error)
+            if (allocated(error)) return
+            call check(error, maxval(abs(alpha)) <= tight*maxval(abs(u)), element%name//': alpha '// &
+                       to_string(maxval(abs(alpha))))
+            if (allocated(error)) return
+            call check(error, maxval(abs(strain - plain_strain)) <= tight*maxval(abs(plain_strain)) .and. &
+                       maxval(abs(fint - plain_fint)) <= tight*maxval(abs(plain_fint)), &
+                       element%name//': strain or fint differ from the constant state')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_eas_patch
+
+   !> Pure bending of the rectangle [-1, 1] x [-1/4, 1/4] in plane strain, Hooke: the exact
+   !> field sigma_xx = k y (all other stresses 0) is u = a x y, v = -(a x^2 + b y^2)/2 with
+   !> a = (1 - nu^2) k / E, b = nu (1 + nu) k / E. Given its nodal values, EAS4 recovers the
+   !> exact stress at every point (the modes E12 ~ xi and E22 ~ eta carry the parasitic shear and
+   !> the Poisson strain the bilinear field lacks, as the incompatible modes x^2, y^2 of Wilson's
+   !> element would), which the plain element does not (shear a x).
+   subroutine test_eas_bending(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), parameter :: k = 1.0_dp
+      real(dp), parameter :: a = (1.0_dp - poisson**2)*k/young, b = poisson*(1.0_dp + poisson)*k/young
+      real(dp), parameter :: rectangle(3, 4) = reshape([-1.0_dp, -0.25_dp, 0.0_dp, 1.0_dp, -0.25_dp, 0.0_dp, &
+                                                        1.0_dp, 0.25_dp, 0.0_dp, -1.0_dp, 0.25_dp, 0.0_dp], [3, 4])
+      type(plane_solid_t) :: element
+      real(dp) :: u(3, 4), fint(12), stress(6, 4), positions(3, 4), expected(6), alpha(4), none(0)
+      real(dp) :: state_old(0, 4), state_new(0, 4)
+      integer :: g
+      u(1, :) = a*rectangle(1, :)*rectangle(2, :)
+      u(2, :) = -0.5_dp*(a*rectangle(1, :)**2 + b*rectangle(2, :)**2)
+      u(3, :) = 0.0_dp
+      element = new_plane_solid('PLANE4', new_quad4_cell(), kinematics_linear, .false., thickness, n_eas=4)
+      alpha = 0.0_dp
+      call element%evaluate(new_linear_elastic(young, poisson, 0.0_dp), rectangle, u, alpha, state_old, state_new, &
+                            fint, stress=stress, error=error)
+      if (allocated(error)) return
+      call element%point_positions(rectangle, positions)
+      do g = 1, 4
+         expected = 0.0_dp
+         expected(1) = k*positions(2, g)
+         expected(3) = poisson*expected(1)
+         call check(error, maxval(abs(stress(:, g) - expected)) <= tight*k, 'EAS4: stress at point '//to_string(g)// &
+                    ' off by '//to_string(maxval(abs(stress(:, g) - expected))))
+         if (allocated(error)) return
+      end do
+      element = plane(.true., .false., kinematics_linear)
+      call element%evaluate(new_linear_elastic(young, poisson, 0.0_dp), rectangle, u, none, state_old, state_new, &
+                            fint, stress=stress, error=error)
+      if (allocated(error)) return
+      call check(error, maxval(abs(stress(4, :))) > 0.1_dp*k, 'plain PLANE4 bends without shear')
+   end subroutine test_eas_bending
+
+   !> PLANE4 EAS 4 and AXISYM4 EAS 4 have 4 enhanced parameters; PLANE4 EAS 3 is an error
+   !> listing the valid counts; PLANE3 and AXISYM3 take EAS 0 only.
+   subroutine test_eas_registry(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: create_error
+      class(element_t), allocatable :: element
+      type(property_list_t) :: options
+      character(len=7), parameter :: quads(2) = ['PLANE4 ', 'AXISYM4'], triangles(2) = ['PLANE3 ', 'AXISYM3']
+      integer :: i
+      allocate (options%names(0), options%values(0))
+      call options%add('EAS', 4.0_dp)
+      do i = 1, 2
+         call create_element(trim(quads(i)), options, kinematics_linear, element, create_error)
+         call check(error, .not. allocated(create_error), trim(quads(i))//' EAS 4 rejected')
+         if (allocated(error)) return
+         call check(error, element%n_enhanced() == 4 .and. element%name == trim(quads(i))//'-EAS4', &
+                    trim(quads(i))//' EAS 4: '//element%name)
+         if (allocated(error)) return
+         call create_element(trim(triangles(i)), options, kinematics_linear, element, create_error)
+         call check(error, allocated(create_error), trim(triangles(i))//' accepts EAS 4')
+         if (allocated(error)) return
+         call check(error, index(create_error%message, 'valid: 0)') > 0, 'message: '//create_error%message)
+         if (allocated(error)) return
+      end do
+      call options%set('EAS', 3.0_dp)
+      call create_element('PLANE4', options, kinematics_linear, element, create_error)
+      call check(error, allocated(create_error), 'PLANE4 accepts EAS 3')
+      if (allocated(error)) return
+      call check(error, index(create_error%message, 'unsupported number of EAS parameters 3 (valid: 0, 4)') > 0, &
+                 'message: '//create_error%message)
+   end subroutine test_eas_registry
+
+   !> A geostatic initial stress varying with depth, sigma0 = -gamma (10 - y) (K0, 1, K0, 0, 0,
+   !> 0) (gamma = 18, K0 = 0.5), at u = 0, Hooke: the enhanced equations weigh S - S0 = 0, so the
+   !> local solve from alpha = 1e-3 returns alpha = 0 and the plain element's fint (plane strain
+   !> and axisymmetric, both kinematics).
+   subroutine test_eas_initial_stress(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(plane_solid_t) :: plain, element
+      real(dp) :: initial(6, 4), positions(3, 4), u(3, 4), fint(12), plain_fint(12), alpha(4), none(0)
+      real(dp) :: state_old(0, 4), state_new(0, 4)
+      integer :: g, k, kinematics
+      u = 0.0_dp
+      do k = 0, 1
+         do kinematics = kinematics_linear, kinematics_total_lagrangian
+            element = enhanced(k == 1, kinematics)
+            plain = plane(.true., k == 1, kinematics)
+            call element%point_positions(quad_coords, positions)
+            do g = 1, 4
+               initial(:, g) = -18.0_dp*(10.0_dp - positions(2, g))*[0.5_dp, 1.0_dp, 0.5_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+            end do
+            alpha = 1.0e-3_dp
+            call element%evaluate(new_linear_elastic(young, poisson, 0.0_dp), quad_coords, u, alpha, state_old, &
+                                  state_new, fint, error=error, initial_stress=initial)
+            if (allocated(error)) return
+            call plain%evaluate(new_linear_elastic(young, poisson, 0.0_dp), quad_coords, u, none, state_old, &
+                                state_new, plain_fint, error=error, initial_stress=initial)
+            if (allocated(error)) return
+            call check(error, maxval(abs(alpha)) <= tight .and. maxval(abs(fint - plain_fint)) <= &
+                       tight*maxval(abs(plain_fint)), element%name//': alpha '//to_string(maxval(abs(alpha)))// &
+                       ', fint off by '//to_string(maxval(abs(fint - plain_fint))))
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_eas_initial_stress
 
 end module test_plane_solid

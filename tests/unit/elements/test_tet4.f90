@@ -95,7 +95,9 @@ contains
 
    !> K of the element at displacements `u` (3, n_nodes) against central differences of fint
    !> over its 3 n_nodes dofs; K symmetric (the laws here have symmetric tangents). With
-   !> `plastic`, some point must yield (history entry 2, YIELDED, of MAT_3DMisesPlastic).
+   !> `plastic`, some point must yield (history entry 2, YIELDED, of MAT_3DMisesPlastic). An
+   !> element with enhanced strains solves its alpha from 0 and each perturbed evaluation from
+   !> that alpha (re-solved: fint(u) with alpha = alpha(u), whose derivative the condensed K is).
    subroutine check_tangent(element, material, coords, u, error, plastic)
       class(element_t), intent(in) :: element
       class(material_t), intent(in) :: material
@@ -103,10 +105,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: plastic
       real(dp), allocatable :: perturbed(:, :), fint(:), plus(:), minus(:), tangent(:, :), difference(:, :)
-      real(dp), allocatable :: state_old(:, :), state_new(:, :)
-      real(dp) :: alpha(0), scale
+      real(dp), allocatable :: state_old(:, :), state_new(:, :), alpha(:), trial(:)
+      real(dp) :: scale
       integer :: a, i, n
       n = element%n_nodes()
+      allocate (alpha(element%n_enhanced()), source=0.0_dp)
       allocate (fint(3*n), plus(3*n), minus(3*n), tangent(3*n, 3*n), difference(3*n, 3*n))
       allocate (state_old(material%n_state(), element%n_points()), source=0.0_dp)
       allocate (state_new(material%n_state(), element%n_points()))
@@ -120,10 +123,12 @@ contains
          do i = 1, 3
             perturbed = u
             perturbed(i, a) = u(i, a) + fd_step
-            call element%evaluate(material, coords, perturbed, alpha, state_old, state_new, plus, error=error)
+            trial = alpha
+            call element%evaluate(material, coords, perturbed, trial, state_old, state_new, plus, error=error)
             if (allocated(error)) return
             perturbed(i, a) = u(i, a) - fd_step
-            call element%evaluate(material, coords, perturbed, alpha, state_old, state_new, minus, error=error)
+            trial = alpha
+            call element%evaluate(material, coords, perturbed, trial, state_old, state_new, minus, error=error)
             if (allocated(error)) return
             difference(:, 3*(a - 1) + i) = tangent(:, 3*(a - 1) + i) - (plus - minus)/(2.0_dp*fd_step)
          end do
