@@ -25,7 +25,6 @@ module frix_contact_assembly
    use frix_error, only: error_t, fatal_error
    use frix_model, only: model_t
    use frix_mesh, only: surface_t
-   use frix_cell_registry, only: cell_entry_t, cell_table, find_in_table
    use frix_system_matrix, only: system_matrix_t
    use frix_face_projection, only: face_normal, face_shape_functions
    use frix_contact_kernel, only: contact_point_result_t, node_face_contact, node_plane_contact, &
@@ -228,26 +227,25 @@ contains
       end do
    end subroutine pair_passes
 
-   !> The tributary measures of the nodes of each edge of a surface of plane elements (their
-   !> thickness or 2 pi r: element_t%face_weights), (2, faces).
-   function plane_face_weights(model, surface) result(weights)
+   !> The tributary areas of the nodes of each face of a surface, integral of N_a dA0 over the
+   !> reference face, by the face's element (element_t%face_weights: a HEX8 face, or an edge
+   !> of a plane element with its thickness or 2 pi r), (face nodes, faces).
+   function surface_face_weights(model, surface) result(weights)
       type(model_t), intent(in) :: model
       type(surface_t), intent(in) :: surface
       real(dp), allocatable :: weights(:, :)
-      type(cell_entry_t), allocatable :: table(:)
       integer, allocatable :: nodes(:)
-      integer :: k, e, face_cell
-      table = cell_table()
-      allocate (weights(2, size(surface%elements)), source=0.0_dp)
+      integer :: k, e
+      allocate (weights(4, size(surface%elements)), source=0.0_dp)
       do k = 1, size(surface%elements)
          e = surface%elements(k)
          nodes = model%mesh%face_nodes(e, surface%faces(k))
-         face_cell = find_in_table(table, table(model%mesh%cell_of(e))%cell%face_cell)
          associate (element => model%blocks(model%mesh%element_block(e))%element%formulation)
-            call element%face_weights(table(face_cell)%cell, model%mesh%coords(:, nodes), weights(:, k))
+            call element%face_weights(model%mesh%cells(model%mesh%face_cell_of(e))%cell, model%mesh%coords(:, nodes), &
+                                      weights(:, k))
          end associate
       end do
-   end function plane_face_weights
+   end function surface_face_weights
 
    !> Pass `pair` of the model (slave_surface against master_surface, 0 for the pair's rigid
    !> plane): slave nodes, master faces, search band, patches, initial anchors.
@@ -259,12 +257,8 @@ contains
 
       pass%pair = pair
       pass%rigid = master_surface == 0
-      if (model%mesh%cell_dimension(model%mesh%surfaces(slave_surface)%elements(1)) == 2) then
-         call set_slave_nodes(model%mesh, model%mesh%surfaces(slave_surface), pass, &
-                              plane_face_weights(model, model%mesh%surfaces(slave_surface)))
-      else
-         call set_slave_nodes(model%mesh, model%mesh%surfaces(slave_surface), pass)
-      end if
+      call set_slave_nodes(model%mesh, model%mesh%surfaces(slave_surface), &
+                           surface_face_weights(model, model%mesh%surfaces(slave_surface)), pass)
       associate (contact_pair => model%contact_pairs(pair))
          if (contact_pair%tied) then
             call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)

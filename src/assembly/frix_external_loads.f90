@@ -7,7 +7,6 @@ module frix_external_loads
    use frix_kinds, only: dp
    use frix_model, only: model_t, curve_factor
    use frix_system_matrix, only: system_matrix_t
-   use frix_cell_registry, only: cell_entry_t, cell_table, find_in_table
    implicit none
    private
 
@@ -33,7 +32,6 @@ contains
       real(dp), allocatable :: element_coords(:, :), weights(:), coords(:, :), displacement(:, :), force(:), &
                                stiffness(:, :)
       integer, allocatable :: face_nodes(:)
-      type(cell_entry_t), allocatable :: table(:)
 
       fext = 0.0_dp
       if (allocated(model%nodal_forces)) then
@@ -49,7 +47,6 @@ contains
       end if
 
       if (allocated(model%pressures)) then
-         table = cell_table()
          do i = 1, size(model%pressures)
             associate (load => model%pressures(i), &
                        surface => model%mesh%surfaces(model%pressures(i)%surface))
@@ -59,7 +56,7 @@ contains
                   e = surface%elements(k)
                   face = surface%faces(k)
                   face_nodes = model%mesh%face_nodes(e, face)
-                  face_cell = find_in_table(table, table(model%mesh%cell_of(e))%cell%face_cell)
+                  face_cell = model%mesh%face_cell_of(e)
                   call face_arrays(size(face_nodes))
                   do a = 1, size(face_nodes)
                      node = face_nodes(a)
@@ -67,7 +64,7 @@ contains
                      displacement(:, a) = u(3*node - 2:3*node)
                   end do
                   associate (element => model%blocks(model%mesh%element_block(e))%element%formulation)
-                     call element%face_pressure(table(face_cell)%cell, coords, displacement, factor, load%follower, &
+                     call element%face_pressure(model%mesh%cells(face_cell)%cell, coords, displacement, factor, load%follower, &
                                                 force, stiffness)
                   end associate
                   do a = 1, size(face_nodes)

@@ -5,7 +5,6 @@
 module frix_contact_pass
    use frix_kinds, only: dp
    use frix_mesh, only: mesh_t, surface_t
-   use frix_surface_load, only: face_area_weights
    use frix_contact_kernel, only: contact_point_result_t, max_ring_nodes, contact_slip
    use frix_contact_patches, only: surface_patches_t, surface_faces, free_edges
    use frix_friction_law, only: branch_free, branch_stick
@@ -100,35 +99,28 @@ module frix_contact_pass
 contains
 
    !> The slave nodes of a surface (in node order) and their tributary areas A_s: the
-   !> reference-face integrals of N_a (face_area_weights, or `face_weights(:, k)` of face k when
-   !> given: the edges of plane elements, element_t%face_weights) summed over the faces at each
-   !> node.
-   subroutine set_slave_nodes(mesh, surface, pass, face_weights)
+   !> reference-face integrals of N_a of its faces (`face_weights(:, k)` of face k, given by the
+   !> faces' elements: element_t%face_weights) summed over the faces at each node.
+   subroutine set_slave_nodes(mesh, surface, face_weights, pass)
       type(mesh_t), intent(in) :: mesh
       type(surface_t), intent(in) :: surface
+      real(dp), intent(in) :: face_weights(:, :)   !! (face nodes, faces) integral of N_a dA0
       type(contact_pass_t), intent(inout) :: pass
-      real(dp), intent(in), optional :: face_weights(:, :)   !! (face nodes, faces)
       integer, allocatable :: position_of(:), face_nodes(:)
       real(dp), allocatable :: node_area(:)
-      real(dp) :: weights(4)
       integer :: k, a, node, n_slave
       allocate (position_of(mesh%n_nodes), source=0)
       allocate (node_area(mesh%n_nodes), source=0.0_dp)
       n_slave = 0
       do k = 1, size(surface%elements)
          face_nodes = mesh%face_nodes(surface%elements(k), surface%faces(k))
-         if (present(face_weights)) then
-            weights(1:size(face_nodes)) = face_weights(1:size(face_nodes), k)
-         else
-            call face_area_weights(mesh%coords(:, face_nodes), weights)
-         end if
          do a = 1, size(face_nodes)
             node = face_nodes(a)
             if (position_of(node) == 0) then
                n_slave = n_slave + 1
                position_of(node) = n_slave
             end if
-            node_area(node) = node_area(node) + weights(a)
+            node_area(node) = node_area(node) + face_weights(a, k)
          end do
       end do
       allocate (pass%slave_nodes(n_slave))

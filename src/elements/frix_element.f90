@@ -10,8 +10,7 @@ module frix_element
    use frix_error, only: error_t
    use frix_material, only: material_t
    use frix_reference_cell, only: reference_cell_t
-   use frix_surface_load, only: pressure_load
-   use frix_vector_algebra, only: cross_product
+   use frix_surface_load, only: pressure_load, face_area_weights
    implicit none
    private
 
@@ -45,9 +44,8 @@ module frix_element
       !> The deck's support check (frix_deck_supports) asks.
       procedure :: resists_translation => element_resists_translation
       !> Tributary measures of one face's nodes, integral of N_a dA0 over the reference face
-      !> (area unit; the contact slave nodes' areas): by default over a 2D face cell,
-      !> |x_,xi x x_,eta| on the cell's rule; a plane element integrates over its edge with its
-      !> thickness or 2 pi r.
+      !> (area unit; the contact slave nodes' areas): by default a HEX8's bilinear face; a plane
+      !> element integrates over its edge with its thickness or 2 pi r.
       procedure :: face_weights => element_face_weights
    end type element_t
 
@@ -128,20 +126,14 @@ contains
       end if
    end subroutine element_face_pressure
 
+   !> The tributary areas of a solid's face: a bilinear (QUAD4) face of a HEX8, the faces
+   !> contact takes (face_area_weights of frix_surface_load).
    pure subroutine element_face_weights(self, face, coords, weights)
       class(element_t), intent(in) :: self
-      class(reference_cell_t), intent(in) :: face   !! the face's cell (dimension 2)
-      real(dp), intent(in) :: coords(:, :)    !! (3, face nodes) reference coordinates
-      real(dp), intent(out) :: weights(:)     !! (face nodes) integral of N_a dA0
-      real(dp) :: shape(face%n_nodes), derivatives(2, face%n_nodes)
-      integer :: point
-      weights(1:face%n_nodes) = 0.0_dp
-      do point = 1, face%n_points()
-         call face%shape_functions(face%points(:, point), shape, derivatives)
-         weights(1:face%n_nodes) = weights(1:face%n_nodes) + face%weights(point)*shape* &
-                                   norm2(cross_product(matmul(coords(:, 1:face%n_nodes), derivatives(1, :)), &
-                                                       matmul(coords(:, 1:face%n_nodes), derivatives(2, :))))
-      end do
+      class(reference_cell_t), intent(in) :: face   !! the face's cell (QUAD4)
+      real(dp), intent(in) :: coords(:, :)    !! (3, 4) reference coordinates
+      real(dp), intent(out) :: weights(:)     !! (4) integral of N_a dA0
+      call face_area_weights(coords(:, 1:4), weights(1:4))
    end subroutine element_face_weights
 
    pure logical function element_resists_translation(self, direction)

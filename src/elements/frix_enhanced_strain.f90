@@ -22,14 +22,12 @@ module frix_enhanced_strain
    use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_material, only: material_t
-   use frix_vector_algebra, only: determinant
    use frix_dense_algebra, only: solve_in_place
    use frix_solid_kinematics, only: material_pass
    implicit none
    private
 
    public :: local_problem_t, start_local_problem, set_enhanced_operator, enhanced_response, condense
-   public :: check_deformation
    public :: max_local_iterations, local_tolerance
 
    !> Newton steps on alpha before giving up. Under total Lagrangian kinematics with little
@@ -125,22 +123,6 @@ contains
       real(dp), intent(in) :: modes(:, :)   !! M(xi_g), (6, n)
       problem%enhanced(:, 1:problem%n, g) = ratio*matmul(push, modes(:, 1:problem%n))
    end subroutine set_enhanced_operator
-
-   !> An error naming the first point with det F <= 0 (total Lagrangian), checked before the
-   !> enhanced material passes.
-   subroutine check_deformation(name, deformation, error)
-      character(len=*), intent(in) :: name
-      real(dp), intent(in) :: deformation(:, :, :)   !! (3, 3, p) F
-      type(error_t), allocatable, intent(out) :: error
-      integer :: g
-      do g = 1, size(deformation, 3)
-         if (determinant(deformation(:, :, g)) <= 0.0_dp) then
-            call fatal_error(error, name//': non-positive deformation gradient determinant '// &
-                             to_string(determinant(deformation(:, :, g)))//' at integration point '//to_string(g))
-            return
-         end if
-      end do
-   end subroutine check_deformation
 
    !> Solve the local problem from the alpha passed in (solve_enhanced) and return the
    !> converged total strains, stresses and tangents at the points (history in state_new).

@@ -38,9 +38,9 @@ module frix_hex8
    use frix_eas_modes, only: max_eas_modes, is_valid_eas_count, eas_modes, strain_push_matrix
    use frix_vector_algebra, only: determinant, invert3
    use frix_enhanced_strain, only: local_problem_t, start_local_problem, set_enhanced_operator, enhanced_response, &
-                                   condense, check_deformation, max_local_iterations, local_tolerance
+                                   condense, max_local_iterations, local_tolerance
    use frix_hex8_cell, only: hex8_corner, hex8_gauss_points
-   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, &
+   use frix_solid_kinematics, only: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, check_deformation, &
                                     tensor_from_voigt
    implicit none
    private

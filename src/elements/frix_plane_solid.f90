@@ -55,10 +55,11 @@ module frix_plane_solid
    use frix_vector_algebra, only: invert3
    use frix_eas_modes, only: plane_eas_modes, strain_push_matrix
    use frix_enhanced_strain, only: local_problem_t, start_local_problem, set_enhanced_operator, enhanced_response, &
-                                   condense, check_deformation
+                                   condense
    use frix_cell_solid, only: cell_solid_t, new_cell_solid
    use frix_reference_cell, only: reference_cell_t
    use frix_solid_kinematics, only: compatible_kinematics, deformed_material_pass, nonlinear_b, point_stresses, &
+                                    check_deformation, &
                                     tensor_from_voigt
    implicit none
    private

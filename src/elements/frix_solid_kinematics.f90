@@ -12,7 +12,7 @@ module frix_solid_kinematics
    private
 
    public :: compatible_kinematics, material_pass, nonlinear_b, cauchy_from_pk2, tensor_from_voigt
-   public :: deformed_material_pass, point_stresses
+   public :: deformed_material_pass, point_stresses, check_deformation
 
 contains
 
@@ -83,8 +83,8 @@ contains
       end do
    end subroutine material_pass
 
-   !> material_pass after checking det F > 0 at every point (total Lagrangian); an error names
-   !> the first point with det F <= 0. Used by the elements without enhanced strains
+   !> material_pass after checking det F > 0 at every point (total Lagrangian, check_deformation).
+   !> Used by the elements without enhanced strains
    !> (frix_cell_solid, frix_plane_solid).
    subroutine deformed_material_pass(name, material, finite, deformation, total, state_old, state_new, pk2, moduli, &
                                      error, initial_stress)
@@ -98,15 +98,12 @@ contains
       real(dp), intent(out) :: pk2(:, :), moduli(:, :, :)
       type(error_t), allocatable, intent(out) :: error
       real(dp), intent(in), optional :: initial_stress(:, :)
-      integer :: g, n_points
+      integer :: n_points
       n_points = size(total, 2)
-      do g = 1, n_points
-         if (finite .and. .not. (determinant(deformation(:, :, g)) > 0.0_dp)) then
-            call fatal_error(error, name//': non-positive deformation gradient determinant '// &
-                             to_string(determinant(deformation(:, :, g)))//' at integration point '//to_string(g))
-            return
-         end if
-      end do
+      if (finite) then
+         call check_deformation(name, deformation(:, :, 1:n_points), error)
+         if (allocated(error)) return
+      end if
       if (present(initial_stress)) then
          call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error, &
                             initial_stress(:, 1:n_points))
@@ -114,6 +111,23 @@ contains
          call material_pass(name, material, finite, total, state_old, state_new, pk2, moduli, error)
       end if
    end subroutine deformed_material_pass
+
+   !> An error naming the first point whose det F is not > 0 (total Lagrangian: an inverted or
+   !> degenerate point, or one that is not a number), checked before the material passes of
+   !> every solid element (deformed_material_pass; frix_hex8 and frix_plane_solid with EAS).
+   subroutine check_deformation(name, deformation, error)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: deformation(:, :, :)   !! (3, 3, n_points) F
+      type(error_t), allocatable, intent(out) :: error
+      integer :: g
+      do g = 1, size(deformation, 3)
+         if (.not. (determinant(deformation(:, :, g)) > 0.0_dp)) then
+            call fatal_error(error, name//': non-positive deformation gradient determinant '// &
+                             to_string(determinant(deformation(:, :, g)))//' at integration point '//to_string(g))
+            return
+         end if
+      end do
+   end subroutine check_deformation
 
    !> The Cauchy stress at every point: S under linear kinematics, F S F^T / det F otherwise.
    pure subroutine point_stresses(finite, deformation, pk2, stress)

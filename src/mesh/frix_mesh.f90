@@ -57,6 +57,7 @@ module frix_mesh
       procedure :: node_count
       procedure :: face_count
       procedure :: cell_dimension
+      procedure :: face_cell_of
       procedure :: element_nodes
       procedure :: face_nodes
       procedure :: has_only_hex8
@@ -133,6 +134,15 @@ contains
       cell_dimension = 3
       if (allocated(self%element_cell)) cell_dimension = self%cells(self%element_cell(e))%cell%dimension
    end function cell_dimension
+
+   !> The index in `cells` of the cell of element e's faces (QUAD4 for a HEX8, TRI3 for a
+   !> TET4, LINE2 for a QUAD4): what a pressure or a contact surface on the face integrates
+   !> over. Needs the cells (set_cells: every mesh of the readers and the deck has them).
+   pure integer function face_cell_of(self, e)
+      class(mesh_t), intent(in) :: self
+      integer, intent(in) :: e
+      face_cell_of = find_in_table(self%cells, self%cells(self%cell_of(e))%cell%face_cell)
+   end function face_cell_of
 
    !> Faces of element e.
    pure integer function face_count(self, e)
