@@ -47,7 +47,7 @@ module frix_contact_assembly
    public :: contact_counts, contact_nodal_fields, contact_pass_table, contact_table_labels, contact_resultant
    public :: contact_history_rows, get_contact_history, set_contact_history, restart_mortar_rows
    public :: reset_friction_branches, release_inconsistent_branches
-   public :: check_ties, add_pattern_pairs
+   public :: check_ties, add_pattern_pairs, contact_gaps
 
    type :: contact_system_t
       type(contact_pass_t), allocatable :: passes(:)
@@ -369,13 +369,15 @@ contains
    end subroutine add_extra_pair
 
    !> Add the contact contributions at u to fint and (if present) to the tangent matrix.
-   subroutine assemble_contact(model, system, u, fint, matrix, predictor)
+   subroutine assemble_contact(model, system, u, fint, matrix, predictor, open_band)
       type(model_t), intent(in) :: model
       type(contact_system_t), intent(inout) :: system
       real(dp), intent(in) :: u(:)
       real(dp), intent(inout) :: fint(:)
       class(system_matrix_t), intent(inout), optional :: matrix
       logical, intent(in), optional :: predictor  !! first iteration of an increment: add the touching stiffness
+      !> the touching stiffness also for open nodes with 0 <= g <= open_band (a singular tangent's retry)
+      real(dp), intent(in), optional :: open_band
       real(dp) :: x_slave(3), x_face(3, 4), force(3*max_kernel_nodes), tangent(3*max_kernel_nodes, 3*max_kernel_nodes)
       real(dp) :: force3(3), tangent3(3, 3), shape(4), d_xi(4), d_eta(4)
       ! absent (unallocated) unless the node's anchor lies on another face / normals are smoothed
@@ -384,7 +386,7 @@ contains
       real(dp), allocatable :: lambda_t(:)
       integer, allocatable :: patch(:, :)
       integer :: p, i, a, slave, nodes(max_kernel_nodes), n_nodes, n, node, attempt, first_ring
-      real(dp) :: touch_normal, touch_tangential
+      real(dp) :: touch_normal, touch_tangential, band
       type(contact_parameters_t) :: parameters   ! the pair's, with the pass's grown penalties
       logical :: touching_stiffness
 
@@ -403,6 +405,9 @@ contains
                                          matrix)
                cycle
             end if
+            band = -1.0_dp
+            if (touching_stiffness) band = parameters%gap_tolerance
+            if (present(open_band)) band = max(band, open_band)
             touch_normal = parameters%normal%stiffness()
             touch_tangential = 0.0_dp
             if (.not. parameters%friction%frictionless()) &
@@ -421,10 +426,11 @@ contains
                      if (.not. present(matrix)) exit
                      if (.not. slip_reversed(pass, i)) exit
                   end do
-                  if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
-                      pass%result(i)%gap <= parameters%gap_tolerance) then
+                  if (pass%result(i)%status == contact_open .and. pass%result(i)%gap <= band) then
                      call add_touching_stiffness(pass%area(i), touch_normal, touch_tangential, &
                                                  pair%plane_normal, [1.0_dp], tangent3)
+                     if (present(open_band)) force3 = force3 + pass%area(i)*touch_normal*pass%result(i)%gap* &
+                                                      pair%plane_normal
                   end if
                   fint(3*slave - 2:3*slave) = fint(3*slave - 2:3*slave) + force3
                   if (present(matrix)) call matrix%add_element([slave], tangent3)
@@ -459,11 +465,13 @@ contains
                   if (.not. present(matrix)) exit
                   if (.not. slip_reversed(pass, i)) exit
                end do
-               if (touching_stiffness .and. pass%result(i)%status == contact_open .and. &
-                   pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= parameters%gap_tolerance) then
+               if (pass%result(i)%status == contact_open .and. &
+                   pass%result(i)%gap >= 0.0_dp .and. pass%result(i)%gap <= band) then
                   call face_shape_functions(pass%result(i)%xi, shape, d_xi, d_eta)
                   call add_touching_stiffness(pass%area(i), touch_normal, touch_tangential, &
                                               face_normal(x_face, pass%result(i)%xi), [1.0_dp, -shape], tangent(:15, :15))
+                  if (present(open_band)) call add_gap_force(pass%area(i)*touch_normal*pass%result(i)%gap, &
+                                                             face_normal(x_face, pass%result(i)%xi), shape, force(:15))
                end if
                do a = 1, 5
                   node = nodes(a)
@@ -622,6 +630,43 @@ contains
          end associate
       end do
    end function release_inconsistent_branches
+
+   !> The force of a node taken as in contact at its gap g > 0 (the linear term of the penalty
+   !> law k_N max(0, -g) on the predicted active set): f_int = A k_N g c_a n with c = (1, -N_a)
+   !> (the kernel's sign convention, docs/contact.md "Forces"); `scaled_gap` = A k_N g.
+   pure subroutine add_gap_force(scaled_gap, normal, shape, force)
+      real(dp), intent(in) :: scaled_gap, normal(3), shape(4)
+      real(dp), intent(inout) :: force(15)
+      integer :: a
+      force(1:3) = force(1:3) + scaled_gap*normal
+      do a = 1, 4
+         force(3*a + 1:3*a + 3) = force(3*a + 1:3*a + 3) - shape(a)*scaled_gap*normal
+      end do
+   end subroutine add_gap_force
+
+   !> The gap g of every slave node of the contact passes (node-to-segment, rigid plane, mortar:
+   !> the weighted gap g_j / D_j) at the last evaluation, pass after pass (huge where the node
+   !> has no master face): what the line search compares before and after a step to find where
+   !> open nodes first touch.
+   subroutine contact_gaps(system, gaps)
+      type(contact_system_t), intent(in) :: system
+      real(dp), allocatable, intent(out) :: gaps(:)
+      integer :: p, n
+      n = 0
+      do p = 1, size(system%passes)
+         if (system%passes(p)%tied) cycle
+         n = n + size(system%passes(p)%slave_nodes)
+      end do
+      allocate (gaps(n))
+      n = 0
+      do p = 1, size(system%passes)
+         associate (pass => system%passes(p))
+            if (pass%tied) cycle
+            gaps(n + 1:n + size(pass%slave_nodes)) = pass%result(:size(pass%slave_nodes))%gap
+            n = n + size(pass%slave_nodes)
+         end associate
+      end do
+   end subroutine contact_gaps
 
    !> Slave nodes in contact (stick or slip) and slipping, over all passes.
    subroutine contact_counts(system, n_active, n_slipping)

@@ -190,6 +190,7 @@ contains
       write (*, '(a,t40,i12)') 'frix: stat assemblies', context%n_assemblies
       if (has_contact) write (*, '(a,t40,i12)') 'frix: stat line_search_trials', context%n_line_search_trials
       if (has_contact) write (*, '(a,t40,i12)') 'frix: stat stick_releases', context%n_releases
+      if (has_contact) write (*, '(a,t40,i12)') 'frix: stat predicted_contact_solves', context%n_predicted_contact
       if (has_contact) write (*, '(a,t40,i12)') 'frix: stat friction_continuations', &
          context%n_continuations
       if (context%n_augmentations > 0) write (*, '(a,t40,i12)') 'frix: stat augmentations', &

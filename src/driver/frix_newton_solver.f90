@@ -30,7 +30,7 @@
 module frix_newton_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
-   use frix_error, only: error_t
+   use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_stop_request, only: stop_requested
    use frix_model, only: model_t
@@ -49,7 +49,7 @@ module frix_newton_solver
    use frix_equation_checks, only: check_finite, check_finite_tangent, describe_singularity, equation_label
    use frix_contact_assembly, only: search_contact, assemble_contact, &
                                     contact_counts, reset_friction_branches, &
-                                    release_inconsistent_branches, add_pattern_pairs
+                                    release_inconsistent_branches, add_pattern_pairs, contact_gaps
    implicit none
    private
 
@@ -75,8 +75,11 @@ module frix_newton_solver
    type :: acceptance_level_t
       real(dp) :: level = 0.0_dp
       real(dp) :: weight = 0.0_dp   !! Q_k; 0 before the first step
+      !> consecutive Newton steps the line search shortened below short_step (a stall)
+      integer :: short_steps = 0
    contains
       procedure :: include => include_step
+      procedure :: record_step
    end type acceptance_level_t
 
    !> Everything the iterations need that outlives one increment.
@@ -107,6 +110,7 @@ module frix_newton_solver
       integer :: n_iterations = 0              !! Newton corrections of the whole run
       integer :: n_line_search_trials = 0      !! shortened steps tried by the contact line search
       integer :: n_releases = 0                !! converged iterates where held nodes were released
+      integer :: n_predicted_contact = 0       !! singular tangents solved again (solve_predicted_contact)
       integer :: n_continuations = 0           !! failed increments retried by friction continuation
       integer :: n_augmentations = 0           !! multiplier updates of augmented contact (frix_augmentation)
       !> corrections solved with the factors of an earlier tangent (solve_increment's reuse_factors)
@@ -122,6 +126,12 @@ module frix_newton_solver
    !> The weight of the past in the contact line search's acceptance level (contact_line_search;
    !> 0 would be the monotone rule): Zhang & Hager's eta, their recommended 0.85
    real(dp), parameter :: nonmonotone_weight = 0.85_dp
+   !> A Newton step cut by the contact line search below this fraction counts as a stall
+   !> (acceptance_level_t%short_steps, contact_line_search's first-touch trial)
+   real(dp), parameter :: short_step = 0.1_dp
+   !> The first-touch trial goes this factor beyond the fraction where the first open node
+   !> touches (contact_line_search): inside the contact, by 10 % of the way to it
+   real(dp), parameter :: touch_overshoot = 1.1_dp
    real(dp), parameter :: divergence_factor = 1.0e6_dp  !! ||r|| growing beyond this x the first: diverging
    !> A correction must bring ||r|| below this fraction of the last one for the next to reuse
    !> the factors (one decade: a new tangent is cheaper than a slow tail of modified-Newton
@@ -247,7 +257,7 @@ contains
          evaluated = .false.
          if (state%has_contact .and. iteration > 0) then
             call acceptance%include(residual_norm)
-            call contact_line_search(model, context, state, current_time, time_correction, acceptance%level, &
+            call contact_line_search(model, context, state, current_time, time_correction, acceptance, &
                                      correction_norm, evaluated, residual_norm, reference, report%failure, error)
             if (allocated(error) .or. allocated(report%failure)) return
          end if
@@ -291,6 +301,18 @@ contains
       end if
       call context%matrix%get_diagonal(context%diagonal)
    end subroutine evaluate_iterate
+
+   !> Count the Newton steps the line search cut below short_step in a row (fraction: the
+   !> accepted part of the step).
+   pure subroutine record_step(acceptance, fraction)
+      class(acceptance_level_t), intent(inout) :: acceptance
+      real(dp), intent(in) :: fraction
+      if (fraction < short_step) then
+         acceptance%short_steps = acceptance%short_steps + 1
+      else
+         acceptance%short_steps = 0
+      end if
+   end subroutine record_step
 
    !> The level after a Newton step that starts from |r| = residual_norm (acceptance_level_t).
    pure subroutine include_step(acceptance, residual_norm)
@@ -466,6 +488,12 @@ contains
          if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
          call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
          call factorize_and_solve(model, context, inner_error)
+         if (allocated(inner_error) .and. state%has_contact) then
+            if (context%solver%failed_equation > 0) then
+               deallocate (inner_error)
+               call solve_predicted_contact(model, context, state, time, inner_error)
+            end if
+         end if
          if (allocated(inner_error)) then
             call context%factors%discard()
          else
@@ -507,6 +535,42 @@ contains
       end if
       state%time = time
    end subroutine apply_correction
+
+   !> A singular tangent with contact (typically a body that has left all its master surfaces
+   !> at this iterate and floats): the correction is solved again with every open slave node
+   !> that has a master face taken as in contact, its internal force linear in its gap
+   !> (A k_N g, pulling it onto the master) and its stiffness the touching one: the Newton step
+   !> of the penalty law on an active set that holds every node near a master, as an active-set
+   !> (semi-smooth) Newton step re-enters nodes (Hintermueller, Ito & Kunisch, SIAM J. Optim.
+   !> 13 (2003) 865-888). Nodes that should stay open leave the set at the next iterate, whose
+   !> residual is the true law's; the residual, fint and reactions of this iterate are kept for
+   !> the line search.
+   subroutine solve_predicted_contact(model, context, state, time, error)
+      type(model_t), intent(in) :: model
+      type(newton_context_t), intent(inout) :: context
+      type(analysis_state_t), intent(inout) :: state
+      real(dp), intent(in) :: time
+      type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: residual(:), fint(:), reactions(:)
+      real(dp) :: residual_norm, reference, diagonal_scale
+      character(len=:), allocatable :: failure
+      context%n_predicted_contact = context%n_predicted_contact + 1
+      allocate (residual, source=context%residual)
+      allocate (fint, source=context%fint)
+      allocate (reactions, source=context%reactions)
+      call evaluate_equilibrium(model, context, state, time, .true., residual_norm, reference, failure, error, &
+                                open_band=huge(1.0_dp))
+      if (.not. allocated(error) .and. allocated(failure)) call fatal_error(error, failure)
+      if (allocated(error)) return
+      call context%matrix%get_diagonal(context%diagonal)
+      diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
+      if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
+      call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
+      call factorize_and_solve(model, context, error)
+      context%residual = residual
+      context%fint = fint
+      context%reactions = reactions
+   end subroutine solve_predicted_contact
 
    !> Path following: the load-factor correction dt of this iteration and the correction
    !> du = a + dt b, where a = K^-1 r is in context%correction (with K still factorized) and
@@ -571,7 +635,7 @@ contains
    !> an element cannot be evaluated (a smaller increment may cure it), `error` for a failure
    !> of the contact search.
    subroutine evaluate_equilibrium(model, context, state, time, with_tangent, residual_norm, reference, &
-                                   failure, error, predictor)
+                                   failure, error, predictor, open_band)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
@@ -581,6 +645,7 @@ contains
       character(len=:), allocatable, intent(inout) :: failure
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: predictor   !! first iteration of the increment
+      real(dp), intent(in), optional :: open_band  !! open nodes taken as in contact (solve_predicted_contact)
       type(error_t), allocatable :: element_error
       real(dp) :: start, lap
       start = wall_clock_seconds()
@@ -605,7 +670,7 @@ contains
       lap = wall_clock_seconds()
       if (state%has_contact) then
          if (with_tangent) then
-            call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor)
+            call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor, open_band)
          else
             call assemble_contact(model, state%contact, state%u, context%fint)
          end if
@@ -672,19 +737,24 @@ contains
    !> the active set of a soft penalty grows over several iterations, the residual may rise a
    !> little for an iteration or two on the way to the solution, and the monotone rule cut those
    !> steps short); after `max_trials` the trial with
-   !> the smallest residual norm is kept. The correction norm reported is that of the
+   !> the smallest residual norm is kept. After a stall (the last Newton step cut below
+   !> short_step), a bracketed search first tries the step just past the point where the first
+   !> open slave node touches its master (first_touch, touch_overshoot): a stiff penalty makes
+   !> g(1) so negative that regula falsi lands at the 5 % inset, before that node touches, and
+   !> the active set, hence the tangent, never changes (docs/contact.md, "In the global system",
+   !> Line search). The correction norm reported is that of the
    !> accepted step. With path following the pseudo time moves with the step, t_old + s dt
    !> (`time` in: after the full step; out: after the accepted one). `evaluated`: the state is
    !> the last trial evaluated (an accepted one), whose residual (context%residual, ...) and
    !> norms (`residual_norm`, `reference`) are those of the next iterate.
-   subroutine contact_line_search(model, context, state, time, time_correction, acceptance_level, &
+   subroutine contact_line_search(model, context, state, time, time_correction, acceptance, &
                                   correction_norm, evaluated, residual_norm, reference, failure, error)
       type(model_t), intent(in) :: model
       type(newton_context_t), intent(inout) :: context
       type(analysis_state_t), intent(inout) :: state
       real(dp), intent(inout) :: time
       real(dp), intent(in) :: time_correction   !! dt of the full step (0 without path following)
-      real(dp), intent(in) :: acceptance_level
+      type(acceptance_level_t), intent(inout) :: acceptance
       real(dp), intent(inout) :: correction_norm
       logical, intent(out) :: evaluated
       real(dp), intent(inout) :: residual_norm, reference
@@ -693,7 +763,8 @@ contains
       integer, parameter :: max_trials = 8
       real(dp), parameter :: inset = 0.05_dp   !! minimum distance from the bracket's ends
       real(dp) :: trial_norm, trial_reference, fraction, next, best_norm, best_fraction
-      real(dp) :: low, high, g_low, g_high, g
+      real(dp) :: low, high, g_low, g_high, g, touch
+      real(dp), allocatable :: gaps_before(:)
       logical :: bracketed, failed_high
       integer :: k, replaced_end
       evaluated = .false.
@@ -707,17 +778,21 @@ contains
       fraction = 1.0_dp
       best_norm = huge(1.0_dp)
       best_fraction = 1.0_dp
+      if (acceptance%short_steps > 0) call contact_gaps(state%contact, gaps_before)
+      touch = 1.0_dp
       do k = 1, max_trials
          call evaluate_equilibrium(model, context, state, time, .false., trial_norm, trial_reference, failure, &
                                    error)
          if (allocated(error)) return
+         if (k == 1 .and. allocated(gaps_before)) touch = first_touch(state, gaps_before)
          if (allocated(failure)) then
             deallocate (failure)   ! an inverted element: a shorter step
             high = fraction
             bracketed = .false.
             failed_high = .true.
          else
-            if (trial_norm <= acceptance_level) then
+            if (trial_norm <= acceptance%level) then
+               call acceptance%record_step(fraction)
                correction_norm = fraction*global_norm(context%correction)
                evaluated = .true.
                residual_norm = trial_norm
@@ -753,12 +828,16 @@ contains
             end if
          end if
          if (k == max_trials) exit
-         if (bracketed) then
+         if (bracketed .and. touch < 1.0_dp) then
+            ! after a stalled step: just past the first touch, so that the node enters the active set
+            next = min(touch_overshoot*touch, 0.5_dp*(1.0_dp + touch))
+         else if (bracketed) then
             next = low + g_low*(high - low)/(g_low - g_high)
             next = min(max(next, low + inset*(high - low)), high - inset*(high - low))
          else
             next = 0.5_dp*(low + high)
          end if
+         touch = 1.0_dp   ! the first trial after the full step only
          state%u = state%u + (next - fraction)*context%correction
          time = time + (next - fraction)*time_correction
          state%time = time
@@ -770,7 +849,24 @@ contains
       time = time + (best_fraction - fraction)*time_correction
       state%time = time
       correction_norm = best_fraction*global_norm(context%correction)
+      call acceptance%record_step(best_fraction)
    end subroutine contact_line_search
+
+   !> The fraction s of the step at which the first slave node open before it (gap g0 > 0 in
+   !> `gaps_before`) touches its master, with the gap taken linear along the step to its value
+   !> g1 < 0 after the full step: s = min g0 / (g0 - g1); 1 when no open node closes.
+   real(dp) function first_touch(state, gaps_before) result(touch)
+      type(analysis_state_t), intent(in) :: state
+      real(dp), intent(in) :: gaps_before(:)
+      real(dp), allocatable :: gaps_after(:)
+      integer :: i
+      call contact_gaps(state%contact, gaps_after)
+      touch = 1.0_dp
+      do i = 1, size(gaps_before)
+         if (gaps_before(i) > 0.0_dp .and. gaps_before(i) < huge(1.0_dp) .and. gaps_after(i) < 0.0_dp) &
+            touch = min(touch, gaps_before(i)/(gaps_before(i) - gaps_after(i)))
+      end do
+   end function first_touch
 
    !> Factorize and solve K du = r (a CHOLMOD solver falls back to UMFPACK by itself where the
    !> matrix is not positive definite, frix_auto_solver); a failure names where it broke down.
