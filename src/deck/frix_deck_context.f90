@@ -647,8 +647,8 @@ contains
       element = mesh%first_non_hex8_element(surface)
       if (element == 0) return
       if (mesh%cell_dimension(element) == 2) then
-         call self%report(line, column, what//' between plane bodies is not supported yet, only a plane body '// &
-                          'against a RIGID_PLANE (element '//to_string(mesh%element_ids(element))// &
+         call self%report(line, column, what//' on the edges of plane elements is not supported here '// &
+                          '(element '//to_string(mesh%element_ids(element))// &
                           ' of surface "'//mesh%surfaces(surface)%name//'" is a plane '//mesh%cell_name(element)//')')
          ok = .false.
          return

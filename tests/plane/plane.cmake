@@ -91,3 +91,27 @@ foreach(name error_plane4_eas3 error_axisym3_eas4)
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/errors/check_error_case.sh ${FRIX_BIN} ${plane_dir}/${name}.dck)
   set_tests_properties(plane_${name} PROPERTIES LABELS errors)
 endforeach()
+# 2D contact between deformable plane bodies (node-to-segment against 2-node master segments,
+# frix_contact_pass's plane passes). A pad pressed and dragged on a base with Coulomb friction
+# (mu 0.3, sliding), against the same model as plain HEX8 slabs with u_z = 0 and the 3D
+# node-to-face contact (same numbers to round-off: measured 8.5e-14 of the largest value,
+# the contact force included); one pass with facet normals, and two passes with smoothed
+# normals (measured 3.8e-14).
+add_test(NAME plane_contact_drag_against_slab
+         COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/drag_plane.dck ${plane_dir}/drag_slab.dck
+                 1e-10 u1_n1001 u2_n1001 u1_n1006 u2_n1006 u1_n18 u2_n18 r1_sum_base_ymin r2_sum_base_ymin
+                 c1_pair1 c2_pair1)
+add_test(NAME plane_contact_drag_two_pass_against_slab
+         COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/drag_plane_two_pass.dck
+                 ${plane_dir}/drag_slab_two_pass.dck
+                 1e-10 u1_n1001 u2_n1001 u1_n1006 u2_n1006 u1_n18 u2_n18 r1_sum_base_ymin r2_sum_base_ymin
+                 c1_pair1 c2_pair1)
+# Contact patch test in plane strain (Taylor & Papadopoulos 1991): two PLANE4 blocks with
+# non-matching edges, two passes, augmented normal law (PENTOL 1e-12): the uniaxial stress and
+# the interface pressure p at every node to 1e-7 of p (measured: stress 1.3e-8, pressure
+# 1.5e-8; one pass fails it: 0.13 pressure error, 0.21 stress).
+add_test(NAME plane_contact_patch
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/contact_patch_plane.dck ${plane_check}
+                 contact_patch --pressure 100 --poisson 0.3 --tolerance 1e-7)
+set_tests_properties(plane_contact_drag_against_slab plane_contact_drag_two_pass_against_slab plane_contact_patch
+                     PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
