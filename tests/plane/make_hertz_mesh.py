@@ -113,7 +113,7 @@ def main():
             f.write(f'{dimension} {tag[name]} "{name}"\n')
         f.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(coordinates))
         for k, (x, y, z) in enumerate(coordinates, 1):
-            f.write(f"{k} {x:.17g} {y:.17g} {z:.17g}\n")
+            f.write(f"{k} {x:.12g} {y:.12g} {z:.12g}\n")
         f.write("$EndNodes\n$Elements\n")
         elements = [(kinds["line"], tag[n], e) for n in lines for e in lines[n]] + \
                    [(kinds["area"], tag[n], e) for n in surfaces for e in surfaces[n]]

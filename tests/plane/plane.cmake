@@ -115,3 +115,31 @@ add_test(NAME plane_contact_patch
                  contact_patch --pressure 100 --poisson 0.3 --tolerance 1e-7)
 set_tests_properties(plane_contact_drag_against_slab plane_contact_drag_two_pass_against_slab plane_contact_patch
                      PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
+# Hertz in plane strain (hertz_plane.dck: the V6 data as a plane model, make_hertz_mesh.py):
+# PASSES 2, the curved cylinder with smoothed normals as master of pass 2. On the coarse mesh
+# (a/6) against the HEX8 slab with u_z = 0 and the 3D contact: the same numbers (measured
+# 8e-13 of the largest, the contact force); about 15 s of CPU for both runs: label long.
+add_test(NAME plane_hertz_coarse_against_slab
+         COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/hertz_coarse_plane.dck
+                 ${plane_dir}/hertz_coarse_slab.dck 1e-10 u2_n813 u1_n819 u2_n819 u2_n842 u1_n848 u2_n848
+                 u2_n1203 r2_sum_block_bottom c1_pair1 c2_pair1)
+set_tests_properties(plane_hertz_coarse_against_slab PROPERTIES LABELS "regression;contact;long"
+                     TIMEOUT ${scaled_300})
+# Against Hertz (Johnson 1985, 4.3; tests/contact_v5v6/v6_hertz_check.py, the reference x of
+# the slave nodes from the listing): the half width a and p0 of the fit p^2 = p0^2 (1 - x^2/a^2)
+# within the issue's 1 %, the transmitted force within 1 %, the nodal pressure at x = 0 and the
+# largest nodal error within V6's bounds. Element size a/12 (measured: a 0.9959, p0 0.9948,
+# p(0) 0.957 of Hertz, max error 4.3 % of p0 at the symmetry node) and, label long, a/24
+# (a 1.0003, p0 0.9976, p(0) 0.975, max error 2.5 %).
+add_test(NAME plane_hertz
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/contact_v5v6/run_v6.sh ${FRIX_BIN} ${plane_dir}/hertz_plane.dck
+                 --listing-reference --check a_fit_ratio=0.99:1.01 --check p0_fit_ratio=0.99:1.01
+                 --check force_ratio=0.99:1.01 --check p0_ratio=0.95:1.05 --check a_last_ratio=0:1
+                 --check a_open_ratio=1:2 --check max_err=0:0.05)
+add_test(NAME plane_hertz_fine
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/contact_v5v6/run_v6.sh ${FRIX_BIN} ${plane_dir}/hertz_plane_fine.dck
+                 --listing-reference --check a_fit_ratio=0.995:1.005 --check p0_fit_ratio=0.995:1.005
+                 --check force_ratio=0.99:1.01 --check p0_ratio=0.95:1.05 --check a_last_ratio=0:1
+                 --check a_open_ratio=1:2 --check max_err=0:0.03)
+set_tests_properties(plane_hertz PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
+set_tests_properties(plane_hertz_fine PROPERTIES LABELS "regression;contact;long" TIMEOUT ${scaled_300})
