@@ -34,7 +34,7 @@ module frix_contact_assembly
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_pass, only: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, &
                                 start_pass_state, kernel_nodes, slip_reversed, set_plane_master_faces, &
-                                pass_positions, pass_node, pass_coordinates
+                                pass_positions, pass_node, pass_coordinates, plane_edges
    use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors
    use frix_tie_pass, only: setup_tie
    use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass, commit_mortar_pass, restart_mortar_pass
@@ -281,7 +281,7 @@ contains
          if (pass%rigid) then
             allocate (pass%faces(4, 0))
          else
-            if (plane_edges(model, master_surface)) then
+            if (plane_edges(model%mesh, model%mesh%surfaces(master_surface))) then
                call set_plane_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
             else
                call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
@@ -307,15 +307,6 @@ contains
          end if
       end associate
    end subroutine setup_pass
-
-   !> Whether a surface's faces are edges of plane elements (frix_contact_pass's plane passes).
-   logical function plane_edges(model, surface)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: surface
-      plane_edges = .false.
-      if (size(model%mesh%surfaces(surface)%elements) == 0) return
-      plane_edges = model%mesh%cell_dimension(model%mesh%surfaces(surface)%elements(1)) == 2
-   end function plane_edges
 
    !> Assign master faces at displacements u and make sure the sparse pattern holds every
    !> (slave node, master face node) block; the pattern is rebuilt (a new symbolic analysis

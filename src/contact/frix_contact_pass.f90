@@ -15,7 +15,7 @@ module frix_contact_pass
 
    public :: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, start_pass_state
    public :: kernel_nodes, slip_reversed
-   public :: set_plane_master_faces, pass_positions, pass_node, pass_coordinates
+   public :: set_plane_master_faces, pass_positions, pass_node, pass_coordinates, plane_edges
 
    !> most nodes of one kernel call: slave, face, anchor face, smoothed-normal ring
    integer, parameter :: max_kernel_nodes = 9 + max_ring_nodes
@@ -207,6 +207,16 @@ contains
       pass%free_edge = free_edges(mesh%n_nodes + 2*n_master, pass%faces)
       pass%band = 0.5_dp*pass%face_size
    end subroutine set_plane_master_faces
+
+   !> Whether a surface's faces are edges of plane elements (the master of a plane pass). A
+   !> model's elements are all plane or all solids.
+   pure logical function plane_edges(mesh, surface)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      plane_edges = .false.
+      if (size(surface%elements) == 0) return
+      plane_edges = mesh%cell_dimension(surface%elements(1)) == 2
+   end function plane_edges
 
    !> The mesh node of node `id` of a pass's faces or kernels (a plane pass's corner: its node).
    elemental integer function pass_node(pass, id) result(node)

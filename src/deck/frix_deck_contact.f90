@@ -15,6 +15,7 @@ module frix_deck_contact
    use frix_contact_parameters, only: new_contact_parameters, default_feature_angle, default_penalty_factor
    use frix_contact_kernel, only: max_ring_nodes
    use frix_contact_patches, only: largest_patch_ring, all_faces_angle
+   use frix_contact_pass, only: plane_edges
    use frix_model, only: model_t, contact_pair_t
    use frix_surface_stiffness, only: surface_stiffness
    use frix_deck_tokens, only: deck_line_t
@@ -241,9 +242,7 @@ contains
    logical function plane_surface(model, surface)
       type(model_t), intent(in) :: model
       integer, intent(in) :: surface
-      plane_surface = .false.
-      if (size(model%mesh%surfaces(surface)%elements) == 0) return
-      plane_surface = model%mesh%cell_dimension(model%mesh%surfaces(surface)%elements(1)) == 2
+      plane_surface = plane_edges(model%mesh, model%mesh%surfaces(surface))
    end function plane_surface
 
    !> The keywords after the surfaces, in any order: the rigid plane, the laws, their
