@@ -142,3 +142,12 @@ add_test(NAME plane_hertz_fine
                  --check a_open_ratio=1:2 --check max_err=0:0.03)
 set_tests_properties(plane_hertz PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
 set_tests_properties(plane_hertz_fine PROPERTIES LABELS "regression;contact;long" TIMEOUT ${scaled_300})
+# S5 in plane strain (s5_plane.dck on make_s5_plane.py's plane mesh of s5_coarse.msh; Coulomb
+# mu = 0.5, one pass, facet normals, the pipe PLANE4 EAS 4) against the 3D slab s5_slab.dck
+# (s5_mu0.5.dck with TOLRESID = TOLDISP = 1e-12, no POS3D): the same displacements of the
+# monitored nodes and contact force (measured 1.7e-13 of the largest displacement, 7e-14 of the
+# contact force).
+add_test(NAME plane_s5_against_slab
+         COMMAND bash ${plane_dir}/run_pair.sh ${FRIX_BIN} ${plane_dir}/s5_plane.dck ${plane_dir}/s5_slab.dck
+                 1e-11 u2_n6=u3_n6 u2_n10=u3_n10 u1_n8 u2_n8=u3_n8 u2_n1=u3_n1 c1_pair1 c2_pair1=c3_pair1)
+set_tests_properties(plane_s5_against_slab PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
