@@ -16,11 +16,12 @@
       free end's u_x (u1_n31) within the 6 % of benchmark S1 of Hird & Russell's solution
       (postproc/s1_analytical.py) and below it (the 1D theory ignores the shear lag over H).
 
-  check_plane.py OUT BASE contact_patch --pressure P --poisson NU --tolerance T
-      Contact patch test (contact_patch_plane.dck): at the last increment every integration
-      point's stress is the uniaxial sigma_yy = -P, sigma_zz = -NU P (plane strain), the other
-      components 0, and every slave node of the contact CSV (both passes) has pressure P and
-      no tangential traction; each within T of P.
+  check_plane.py OUT BASE contact_patch --pressure P --poisson NU --tolerance T [--axisymmetric]
+      Contact patch test (contact_patch_plane.dck, contact_patch_axisym.dck): at the last
+      increment every integration point's stress is the uniaxial sigma_yy = -P, sigma_zz = -NU P
+      (plane strain; 0, the hoop stress, with --axisymmetric), the other components 0, and
+      every slave node of the contact CSV (both passes) has pressure P and no tangential
+      traction; each within T of P.
 
 OUT is the run's output folder, BASE the deck's name (files OUT/BASE.h5, OUT/BASE_history.csv).
 Exit 0 if every check holds.
@@ -82,7 +83,7 @@ def check_contact_patch(args):
     with h5py.File(pathlib.Path(args.out) / f"{args.base}.h5", "r") as f:
         last = f["/increments"][sorted(f["/increments"], key=int)[-1]]
         stress = last["stress"][()][:, :QUAD4_POINTS, :]
-    exact = np.array([0.0, -p, -args.poisson * p, 0.0, 0.0, 0.0])
+    exact = np.array([0.0, -p, 0.0 if args.axisymmetric else -args.poisson * p, 0.0, 0.0, 0.0])
     s_error = np.abs(stress - exact).max() / p
     with open(pathlib.Path(args.out) / f"{args.base}_contact.csv") as f:
         rows = list(csv.DictReader(row for row in f if not row.startswith("#")))
@@ -160,6 +161,7 @@ def main():
     contact_patch.add_argument("--pressure", type=float, required=True)
     contact_patch.add_argument("--poisson", type=float, required=True)
     contact_patch.add_argument("--tolerance", type=float, required=True)
+    contact_patch.add_argument("--axisymmetric", action="store_true")
     args = parser.parse_args()
     return {"patch": check_patch, "history": check_history, "s1": check_s1,
             "contact_patch": check_contact_patch}[args.what](args)

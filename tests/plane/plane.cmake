@@ -113,8 +113,14 @@ add_test(NAME plane_contact_drag_two_pass_against_slab
 add_test(NAME plane_contact_patch
          COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/contact_patch_plane.dck ${plane_check}
                  contact_patch --pressure 100 --poisson 0.3 --tolerance 1e-7)
+# The same in axisymmetry (contact_patch_axisym.dck: rings r in [1, 2], AXISYM4; tributary
+# areas 2 pi r times the edge lengths): hoop stress 0 (measured: stress 6.2e-9, pressure
+# 7.1e-9; one pass: 0.12 pressure error).
+add_test(NAME plane_contact_patch_axisymmetric
+         COMMAND bash ${run_deck_check} ${FRIX_BIN} ${plane_dir}/contact_patch_axisym.dck ${plane_check}
+                 contact_patch --pressure 100 --poisson 0.3 --tolerance 1e-7 --axisymmetric)
 set_tests_properties(plane_contact_drag_against_slab plane_contact_drag_two_pass_against_slab plane_contact_patch
-                     PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
+                     plane_contact_patch_axisymmetric PROPERTIES LABELS "regression;contact" TIMEOUT ${scaled_60})
 # Hertz in plane strain (hertz_plane.dck: the V6 data as a plane model, make_hertz_mesh.py):
 # PASSES 2, the curved cylinder with smoothed normals as master of pass 2. On the coarse mesh
 # (a/6) against the HEX8 slab with u_z = 0 and the 3D contact: the same numbers (measured
