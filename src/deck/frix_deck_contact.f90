@@ -641,8 +641,8 @@ contains
       character(len=:), allocatable :: what
       integer :: n_ring, face_nodes(4)
       if (.not. ok) return
-      ! an edge of a plane body: its patch's ring is the corners of the edges at its two nodes,
-      ! within the limit unless more than 4 edges of the surface meet at a node (then the
+      ! an edge of a plane body: its patch's ring is the 2 corners of each other edge at its
+      ! two nodes, within max_ring_nodes unless more than 6 such edges meet there (then the
       ! contact setup reports it: check_patch_rings)
       if (plane_surface(model, master_surface)) return
       call largest_patch_ring(model%mesh, model%mesh%surfaces(master_surface), feature_angle, n_ring, face_nodes)
