@@ -688,11 +688,6 @@ contains
       real(dp) :: stiffness, eps_n
       integer :: softer
       character(len=:), allocatable :: derived, note
-      if (plane_surface(model, pair%slave_surface)) then
-         call reader%report(reader%lines(pair%line), 1, 'automatic penalties are derived for the faces of solids '// &
-                            'only: give EPSN and EPST for the edges of plane elements')
-         return
-      end if
       call softer_surface(model, pair, softer, stiffness)
       if (.not. (stiffness > 0.0_dp .and. pair%penalty_factor*stiffness < huge(1.0_dp))) then
          call reader%report(reader%lines(pair%line), 1, 'cannot derive the automatic penalty: M/h of surface '// &
