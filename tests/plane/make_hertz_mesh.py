@@ -21,6 +21,8 @@ the quadrilateral faces over the curves.
 import argparse
 import math
 
+import gmsh22
+
 
 def graded(length, fine, fine_length, growth):
     """Coordinates 0 .. length: steps `fine` up to fine_length, then each `growth` times the
@@ -106,21 +108,12 @@ def main():
         lines = {n: [(a, b, b + n_plane, a + n_plane) for a, b in e] for n, e in lines.items()}
         surfaces = {n: [q + tuple(k + n_plane for k in q) for q in e] for n, e in surfaces.items()}
         kinds = {"line": 3, "area": 5}
-    with open(args.output, "w") as f:
-        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n" % len(names))
-        for name in names:
-            dimension = (1 if name in lines else 2) + (args.slab is not None)
-            f.write(f'{dimension} {tag[name]} "{name}"\n')
-        f.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(coordinates))
-        for k, (x, y, z) in enumerate(coordinates, 1):
-            f.write(f"{k} {x:.12g} {y:.12g} {z:.12g}\n")
-        f.write("$EndNodes\n$Elements\n")
-        elements = [(kinds["line"], tag[n], e) for n in lines for e in lines[n]] + \
-                   [(kinds["area"], tag[n], e) for n in surfaces for e in surfaces[n]]
-        f.write("%d\n" % len(elements))
-        for k, (kind, physical, e) in enumerate(elements, 1):
-            f.write(f"{k} {kind} 2 {physical} {physical} " + " ".join(map(str, e)) + "\n")
-        f.write("$EndElements\n")
+    dimension = 1 + (args.slab is not None)
+    gmsh22.write(args.output,
+                 [(dimension + (name in surfaces), tag[name], name) for name in names],
+                 [(k, f"{x:.12g} {y:.12g} {z:.12g}") for k, (x, y, z) in enumerate(coordinates, 1)],
+                 [(kinds["line"], tag[n], e) for n in lines for e in lines[n]] +
+                 [(kinds["area"], tag[n], e) for n in surfaces for e in surfaces[n]])
     print(f"{args.output}: {len(coordinates)} nodes, {len(block_quads)} + {len(cyl_quads)} quads "
           f"(block {len(bx) - 1} x {len(by) - 1}, cylinder {len(cx) - 1} x {len(heights) - 1})")
 

@@ -15,6 +15,8 @@ with u_y = 0 (docs/verification/two-d.md).
 import math
 import sys
 
+import gmsh22
+
 
 def read(path):
     with open(path) as f:
@@ -58,18 +60,8 @@ def main():
     used = sorted({physical for _, physical, _ in out})
     dimension = {15: 0, 1: 1, 3: 2}
     dims = {physical: dimension[kind] for kind, physical, _ in out}
-    with open(sys.argv[2], "w") as f:
-        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n" % len(used))
-        for tag in used:
-            f.write(f'{dims[tag]} {tag} "{names[tag][1]}"\n')
-        f.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(front))
-        for n in sorted(front):
-            x, y, z = nodes[n]
-            f.write(f"{n} {x!r} {z!r} 0\n")
-        f.write("$EndNodes\n$Elements\n%d\n" % len(out))
-        for k, (kind, physical, connectivity) in enumerate(out, 1):
-            f.write(f"{k} {kind} 2 {physical} {physical} " + " ".join(map(str, connectivity)) + "\n")
-        f.write("$EndElements\n")
+    gmsh22.write(sys.argv[2], [(dims[tag], tag, names[tag][1]) for tag in used],
+                 [(n, f"{nodes[n][0]!r} {nodes[n][2]!r} 0") for n in sorted(front)], out)
     print(f"{sys.argv[2]}: {len(front)} nodes, {sum(1 for e in out if e[0] == 3)} quadrilaterals, "
           f"{sum(1 for e in out if e[0] == 1)} lines")
 
