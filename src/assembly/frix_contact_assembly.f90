@@ -33,8 +33,9 @@ module frix_contact_assembly
                                    surface_is_curved, all_faces_angle
    use frix_contact_parameters, only: contact_parameters_t
    use frix_contact_pass, only: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, &
-                                start_pass_state, kernel_nodes, slip_reversed
-   use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors, current_nodes
+                                start_pass_state, kernel_nodes, slip_reversed, set_plane_master_faces, &
+                                pass_positions, pass_node, pass_coordinates, plane_edges
+   use frix_contact_search, only: assign_faces, initial_anchors, plane_anchors
    use frix_tie_pass, only: setup_tie
    use frix_mortar_assembly, only: search_mortar_pass, assemble_mortar_pass, commit_mortar_pass, restart_mortar_pass
    use frix_tie_constraints, only: check_tie_nodes
@@ -254,6 +255,7 @@ contains
       integer, intent(in) :: pair, slave_surface, master_surface
       type(contact_pass_t), intent(out) :: pass
       type(error_t), allocatable, intent(out) :: error
+      real(dp), allocatable :: coords(:, :)
 
       pass%pair = pair
       pass%rigid = master_surface == 0
@@ -279,10 +281,14 @@ contains
          if (pass%rigid) then
             allocate (pass%faces(4, 0))
          else
-            call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
-            if (smoothed_master(model%mesh%coords, pass%faces, contact_pair%parameters)) then
-               call surface_patches(model%mesh%coords, pass%faces, contact_pair%parameters%feature_angle, &
-                                    pass%patches)
+            if (plane_edges(model%mesh, model%mesh%surfaces(master_surface))) then
+               call set_plane_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
+            else
+               call set_master_faces(model%mesh, model%mesh%surfaces(master_surface), pass)
+            end if
+            coords = pass_coordinates(pass, model%mesh%coords)
+            if (smoothed_master(coords, pass%faces, contact_pair%parameters)) then
+               call surface_patches(coords, pass%faces, contact_pair%parameters%feature_angle, pass%patches)
                pass%smooth = .true.
                call check_patch_rings(pass%patches, error)
                if (allocated(error)) then
@@ -334,6 +340,7 @@ contains
             do i = 1, size(pass%slave_nodes)
                if (pass%face(i) == 0) cycle
                call kernel_nodes(pass, i, nodes, n_nodes, first_ring)
+               nodes(:n_nodes) = pass_node(pass, nodes(:n_nodes))   ! a plane pass's corners: their nodes
                ! the pairs that can be missing: the slave with every other node, and the
                ! contact face's nodes with the anchor face's and the ring's (those within a
                ! face share an element)
@@ -443,15 +450,15 @@ contains
                end if
                call kernel_nodes(pass, i, nodes, n_nodes, first_ring)
                n = 3*n_nodes
-               x_face = current_nodes(model%mesh%coords, u, nodes(2:5))
+               x_face = pass_positions(pass, model%mesh%coords, u, nodes(2:5))
                ! allocated here (their allocation tells the kernel they are present), then filled
                if (first_ring == 10) then
                   allocate (x_anchor_face(3, 4))
-                  x_anchor_face(:, :) = current_nodes(model%mesh%coords, u, nodes(6:9))
+                  x_anchor_face(:, :) = pass_positions(pass, model%mesh%coords, u, nodes(6:9))
                end if
                if (pass%smooth) then
                   allocate (x_ring(3, n_nodes - first_ring + 1))
-                  x_ring(:, :) = current_nodes(model%mesh%coords, u, nodes(first_ring:n_nodes))
+                  x_ring(:, :) = pass_positions(pass, model%mesh%coords, u, nodes(first_ring:n_nodes))
                   patch = patch_faces_of(pass%patches, pass%face(i))
                end if
                do attempt = 1, 2
@@ -473,6 +480,9 @@ contains
                   if (present(open_band)) call add_gap_force(pass%area(i)*touch_normal*pass%result(i)%gap, &
                                                              face_normal(x_face, pass%result(i)%xi), shape, force(:15))
                end if
+               ! a plane pass's corners: their force and stiffness onto their nodes (u_corner =
+               ! u_node; add_element sums a node's repeated rows and columns)
+               nodes(:n_nodes) = pass_node(pass, nodes(:n_nodes))
                do a = 1, 5
                   node = nodes(a)
                   fint(3*node - 2:3*node) = fint(3*node - 2:3*node) + force(3*a - 2:3*a)

@@ -10,14 +10,15 @@
 !>        E (1 - nu)/((1 + nu)(1 - 2 nu)) for an isotropic law, the stiffness of an element
 !>        compressed across a face while its neighbours hold it sideways (force/area);
 !>   h  = V / A, the element's reference volume over the face's reference area (length): its
-!>        thickness normal to the face for a prism on the face, e.g. a brick element.
+!>        thickness normal to the face for a prism on the face, e.g. a brick element; for a
+!>        plane element its area over the edge's length (the thickness, or 2 pi r, cancels:
+!>        exactly in plane strain, to the ratio of the edge's mean radius to the element's
+!>        centroid radius in axisymmetry).
 !> A surface's value is the mean of M/h over its faces (each face counts once, whatever its
 !> area).
 module frix_surface_stiffness
    use frix_kinds, only: dp
-   use frix_mesh, only: hex8_face_nodes
    use frix_material, only: material_t
-   use frix_surface_load, only: face_area_weights
    use frix_model, only: model_t
    implicit none
    private
@@ -34,18 +35,19 @@ contains
       modulus = (tangent(1, 1) + tangent(2, 2) + tangent(3, 3))/3.0_dp
    end function representative_modulus
 
-   !> M/h (force/area/length) of local face `face` (1..6, frix_mesh) of element `element`,
-   !> h = V/A in the reference configuration; the element's block gives its formulation
-   !> (for V) and material (for M).
+   !> M/h (force/area/length) of local face `face` of element `element`, h = V/A in the
+   !> reference configuration; the element's block gives its formulation (V: volume_weights, A:
+   !> face_weights, a HEX8's bilinear face or a plane element's edge with its thickness or
+   !> 2 pi r, whose factor cancels in A/V) and material (for M).
    real(dp) function face_stiffness(model, element, face) result(stiffness)
       type(model_t), intent(in) :: model
       integer, intent(in) :: element   !! internal element number
       integer, intent(in) :: face      !! local face number
-      real(dp) :: coords(3, 8), weights(8), area_weights(4), volume, area, scale, modulus, ratio
+      real(dp), allocatable :: coords(:, :), face_coords(:, :), weights(:), area_weights(:)
+      real(dp) :: volume, area, scale, modulus, ratio
       integer :: block
-      ! contact faces are HEX8 faces (frix_deck_contact rejects other cells)
       block = model%mesh%element_block(element)
-      coords = model%mesh%coords(:, model%mesh%connectivity(1:8, element))
+      coords = model%mesh%coords(:, model%mesh%element_nodes(element))
       ! A/V from the element scaled to unit size (no overflow or underflow for any finite
       ! coordinates), then A/V = (A'/V') / scale; a degenerate element gives 0, a value beyond
       ! the range of reals huge(): the caller reports either
@@ -53,10 +55,15 @@ contains
       scale = maxval(abs(coords))
       if (.not. (scale > 0.0_dp .and. scale <= huge(1.0_dp))) return
       coords = coords/scale
-      call model%blocks(block)%element%formulation%volume_weights(coords, weights)
+      face_coords = model%mesh%coords(:, model%mesh%face_nodes(element, face))/scale
+      allocate (weights(size(coords, 2)), area_weights(max(4, size(face_coords, 2))))
+      associate (formulation => model%blocks(block)%element%formulation)
+         call formulation%volume_weights(coords, weights)
+         call formulation%face_weights(model%mesh%cells(model%mesh%face_cell_of(element))%cell, face_coords, &
+                                       area_weights)
+      end associate
       volume = sum(weights)
-      call face_area_weights(coords(:, hex8_face_nodes(:, face)), area_weights)
-      area = sum(area_weights)
+      area = sum(area_weights(1:size(face_coords, 2)))
       if (.not. (volume > 0.0_dp .and. area > 0.0_dp)) return
       ratio = area/volume
       modulus = representative_modulus(model%materials(model%blocks(block)%material)%law)

@@ -15,6 +15,7 @@ module frix_contact_pass
 
    public :: contact_pass_t, max_kernel_nodes, set_slave_nodes, set_master_faces, start_pass_state
    public :: kernel_nodes, slip_reversed
+   public :: set_plane_master_faces, pass_positions, pass_node, pass_coordinates, plane_edges
 
    !> most nodes of one kernel call: slave, face, anchor face, smoothed-normal ring
    integer, parameter :: max_kernel_nodes = 9 + max_ring_nodes
@@ -54,6 +55,17 @@ module frix_contact_pass
       !> face: a free edge, the master surface's boundary, beyond which a slave node is open
       !> (frix_contact_search's nearest_face; docs/contact.md, "Edges and corners")
       logical, allocatable :: free_edge(:, :)
+      !> a master surface of plane elements' edges (docs/contact.md, "Plane bodies"): edge
+      !> (n1, n2) is the face [lo(n1), lo(n2), hi(n2), hi(n1)] of corners at the edge's nodes
+      !> moved by -h/2 and +h/2 along z (h = corner_height), so that the slave nodes, in z = 0,
+      !> meet the faces' middle line. The corners are numbers beyond the mesh's n_nodes:
+      !> n_nodes + k is corner k, at mesh node corner_node(k), lo for k <= size / 2, hi after;
+      !> a corner moves with its node (pass_positions), and its force and stiffness go onto
+      !> the node (pass_node)
+      logical :: plane = .false.
+      integer :: n_nodes = 0                   !! the mesh's nodes (plane: corners are beyond)
+      integer, allocatable :: corner_node(:)
+      real(dp) :: corner_height = 0.0_dp
       real(dp) :: band = 0.0_dp                !! search band above the master surface (length)
       real(dp) :: face_size = 0.0_dp           !! mean size of the master faces (reference, length)
       !> smoothed normals (NORMALS Smoothed or Auto): the patch of every master face (within the
@@ -150,6 +162,113 @@ contains
       pass%face_size = size_sum/max(1, size(surface%elements))
       pass%band = 0.5_dp*pass%face_size
    end subroutine set_master_faces
+
+   !> The master faces of a surface of plane elements' edges (pass%plane: the corners of each
+   !> edge's face at z = -h/2 and +h/2, h the mean edge length), their free edges and the
+   !> search band's geometric part: half the mean edge length (reference, length). The edges
+   !> run counter-clockwise around their elements, so that the face normal (x_3 - x_1) x
+   !> (x_4 - x_2) = 4 h (n2 - n1) x e_z points out of the master body.
+   subroutine set_plane_master_faces(mesh, surface, pass)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      type(contact_pass_t), intent(inout) :: pass
+      integer, allocatable :: corner_of(:), edge(:)
+      real(dp) :: length_sum
+      integer :: k, a, n_master, n_edges
+      n_edges = size(surface%elements)
+      allocate (corner_of(mesh%n_nodes), source=0)
+      do k = 1, n_edges
+         edge = mesh%face_nodes(surface%elements(k), surface%faces(k))
+         corner_of(edge) = 1
+      end do
+      n_master = 0
+      do a = 1, mesh%n_nodes
+         if (corner_of(a) == 0) cycle
+         n_master = n_master + 1
+         corner_of(a) = n_master
+      end do
+      pass%plane = .true.
+      pass%n_nodes = mesh%n_nodes
+      allocate (pass%corner_node(2*n_master))
+      do a = 1, mesh%n_nodes
+         if (corner_of(a) == 0) cycle
+         pass%corner_node([corner_of(a), n_master + corner_of(a)]) = a
+      end do
+      allocate (pass%faces(4, n_edges))
+      length_sum = 0.0_dp
+      do k = 1, n_edges
+         edge = mesh%face_nodes(surface%elements(k), surface%faces(k))
+         pass%faces(:, k) = mesh%n_nodes + [corner_of(edge(1)), corner_of(edge(2)), &
+                                            n_master + corner_of(edge(2)), n_master + corner_of(edge(1))]
+         length_sum = length_sum + norm2(mesh%coords(:, edge(2)) - mesh%coords(:, edge(1)))
+      end do
+      pass%face_size = length_sum/max(1, n_edges)
+      pass%corner_height = pass%face_size
+      pass%free_edge = free_edges(mesh%n_nodes + 2*n_master, pass%faces)
+      pass%band = 0.5_dp*pass%face_size
+   end subroutine set_plane_master_faces
+
+   !> Whether a surface's faces are edges of plane elements (the master of a plane pass). A
+   !> model's elements are all plane or all solids.
+   pure logical function plane_edges(mesh, surface)
+      type(mesh_t), intent(in) :: mesh
+      type(surface_t), intent(in) :: surface
+      plane_edges = .false.
+      if (size(surface%elements) == 0) return
+      plane_edges = mesh%cell_dimension(surface%elements(1)) == 2
+   end function plane_edges
+
+   !> The mesh node of node `id` of a pass's faces or kernels (a plane pass's corner: its node).
+   elemental integer function pass_node(pass, id) result(node)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: id
+      node = id
+      if (pass%plane) then
+         if (id > pass%n_nodes) node = pass%corner_node(id - pass%n_nodes)
+      end if
+   end function pass_node
+
+   !> The current positions X + u of nodes `ids` of a pass's faces or kernels (mesh nodes, or
+   !> a plane pass's corners: their node's position moved by -+h/2 along z). coords (3,
+   !> n_nodes) reference coordinates, u (3 n_nodes) displacements node-major.
+   pure function pass_positions(pass, coords, u, ids) result(x)
+      type(contact_pass_t), intent(in) :: pass
+      real(dp), intent(in) :: coords(:, :), u(:)
+      integer, intent(in) :: ids(:)
+      real(dp) :: x(3, size(ids))
+      integer :: a, node
+      do a = 1, size(ids)
+         node = pass_node(pass, ids(a))
+         x(:, a) = coords(:, node) + u(3*node - 2:3*node)
+         if (node /= ids(a)) x(3, a) = x(3, a) + corner_z(pass, ids(a))
+      end do
+   end function pass_positions
+
+   !> The reference coordinates of a pass's nodes: the mesh's (3, n_nodes), and for a plane
+   !> pass its corners after them (3, n_nodes + number of corners).
+   pure function pass_coordinates(pass, coords) result(x)
+      type(contact_pass_t), intent(in) :: pass
+      real(dp), intent(in) :: coords(:, :)
+      real(dp), allocatable :: x(:, :)
+      integer :: k
+      if (.not. pass%plane) then
+         x = coords
+         return
+      end if
+      allocate (x(3, pass%n_nodes + size(pass%corner_node)))
+      x(:, :pass%n_nodes) = coords
+      do k = 1, size(pass%corner_node)
+         x(:, pass%n_nodes + k) = coords(:, pass%corner_node(k))
+         x(3, pass%n_nodes + k) = x(3, pass%n_nodes + k) + corner_z(pass, pass%n_nodes + k)
+      end do
+   end function pass_coordinates
+
+   !> The z offset of a plane pass's corner `id`: -h/2 for the lower corners, +h/2 for the upper.
+   pure real(dp) function corner_z(pass, id)
+      type(contact_pass_t), intent(in) :: pass
+      integer, intent(in) :: id
+      corner_z = merge(-0.5_dp, 0.5_dp, id - pass%n_nodes <= size(pass%corner_node)/2)*pass%corner_height
+   end function corner_z
 
    !> The per-node state of a pass whose slave nodes are set: no face, the law's branches, no
    !> anchor, no slip, zero multipliers.

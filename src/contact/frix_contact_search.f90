@@ -17,14 +17,15 @@
 !> edge by more than the extension zone gets no face: it is open (beyond_free_edge).
 !>
 !> Positions are current: x = X + u, X the mesh's reference coordinates (3, n_nodes), u the
-!> displacements node-major (3 n_nodes).
+!> displacements node-major (3 n_nodes); a master face's corners are read through
+!> frix_contact_pass's pass_positions (a plane pass's corners move with their nodes).
 module frix_contact_search
    use frix_kinds, only: dp
    use frix_vector_algebra, only: cross_product
    use frix_face_projection, only: face_position, face_normal, closest_point_in_face, face_contains
    use frix_smoothed_normals, only: patch_normals, smooth_projection, smooth_normal_at
    use frix_contact_patches, only: ring_nodes_of, patch_faces_of
-   use frix_contact_pass, only: contact_pass_t
+   use frix_contact_pass, only: contact_pass_t, pass_positions
    use frix_free_edge_zone, only: extension_zone, edge_nodes, clamped_on_edge
    use frix_face_grid, only: face_grid_t, build_face_grid, grid_cell
    implicit none
@@ -101,7 +102,7 @@ contains
       end if
       allocate (master%x_faces(3, 4, size(pass%faces, 2)))
       do f = 1, size(pass%faces, 2)
-         master%x_faces(:, :, f) = current_nodes(coords, u, pass%faces(:, f))
+         master%x_faces(:, :, f) = pass_positions(pass, coords, u, pass%faces(:, f))
       end do
       call build_face_grid(master%x_faces, pass%band, master%grid)
       associate (start => master%grid%cell_start)
@@ -342,9 +343,11 @@ contains
          f = pass%face(i)
          if (f == 0) cycle
          x_slave = coords(:, pass%slave_nodes(i))
-         call closest_point_in_face(coords(:, pass%faces(:, f)), x_slave, 0.0_dp, pass%anchor_xi(:, i), fixed)
+         call closest_point_in_face(pass_positions(pass, coords, zero, pass%faces(:, f)), x_slave, 0.0_dp, &
+                                    pass%anchor_xi(:, i), fixed)
          if (pass%smooth) then
-            call smooth_projection(coords(:, pass%faces(:, f)), face_nodal_normals(coords, zero, pass, f), &
+            call smooth_projection(pass_positions(pass, coords, zero, pass%faces(:, f)), &
+                                   face_nodal_normals(coords, zero, pass, f), &
                                    x_slave, xi, converged, jacobian)
             if (converged) then
                if (face_contains(xi, edge_tolerance)) pass%anchor_xi(:, i) = xi
@@ -377,8 +380,8 @@ contains
       type(contact_pass_t), intent(in) :: pass
       integer, intent(in) :: f
       real(dp) :: nodal(3, 4)
-      nodal = patch_normals(current_nodes(coords, u, pass%faces(:, f)), &
-                            current_nodes(coords, u, ring_nodes_of(pass%patches, f)), &
+      nodal = patch_normals(pass_positions(pass, coords, u, pass%faces(:, f)), &
+                            pass_positions(pass, coords, u, ring_nodes_of(pass%patches, f)), &
                             patch_faces_of(pass%patches, f))
    end function face_nodal_normals
 

@@ -15,6 +15,7 @@ module frix_deck_contact
    use frix_contact_parameters, only: new_contact_parameters, default_feature_angle, default_penalty_factor
    use frix_contact_kernel, only: max_ring_nodes
    use frix_contact_patches, only: largest_patch_ring, all_faces_angle
+   use frix_contact_pass, only: plane_edges
    use frix_model, only: model_t, contact_pair_t
    use frix_surface_stiffness, only: surface_stiffness
    use frix_deck_tokens, only: deck_line_t
@@ -204,21 +205,44 @@ contains
             call reader%report(line, position - 1, 'a surface cannot be in contact with itself')
             ok = .false.
          else
-            call reader%require_hex8_faces(line, position - 1, model%mesh, pair%master_surface, what, ok)
+            call check_plane_pair(reader, model, line, position - 1, pair, what, ok)
+            if (ok .and. .not. plane_surface(model, pair%master_surface)) &
+               call reader%require_hex8_faces(line, position - 1, model%mesh, pair%master_surface, what, ok)
          end if
       end if
-      ! the edges of plane elements against a rigid line (RIGID_PLANE with a normal in the x-y plane)
-      if (pair%slave_surface /= 0 .and. .not. (pair%master_surface == 0 .and. plane_surface(model, pair%slave_surface))) &
-         call reader%require_hex8_faces(line, slave_position, model%mesh, pair%slave_surface, what, ok)
+      ! the edges of plane elements against a rigid line (RIGID_PLANE with a normal in the x-y
+      ! plane) or against the edges of plane elements (node-to-segment: frix_contact_pass);
+      ! a TIE between them is reported by check_plane_pair
+      if (pair%slave_surface /= 0) then
+         if (.not. plane_surface(model, pair%slave_surface)) &
+            call reader%require_hex8_faces(line, slave_position, model%mesh, pair%slave_surface, what, ok)
+      end if
    end subroutine read_pair_surfaces
+
+   !> A TIE whose master surface (its name at token `column`) holds edges of plane elements:
+   !> not supported yet. (A model's elements are all plane or all solids: a pair's surfaces
+   !> are of one kind.)
+   subroutine check_plane_pair(reader, model, line, column, pair, what, ok)
+      type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
+      type(deck_line_t), intent(in) :: line
+      integer, intent(in) :: column
+      type(contact_pair_t), intent(in) :: pair
+      character(len=*), intent(in) :: what
+      logical, intent(inout) :: ok
+      if (.not. ok .or. what /= 'TIE') return
+      if (.not. plane_surface(model, pair%master_surface)) return
+      call reader%report(line, column, 'TIE between plane bodies is not supported yet (surface "'// &
+                         model%mesh%surfaces(pair%master_surface)%name//'" holds edges of plane elements): '// &
+                         'use a contact PAIR')
+      ok = .false.
+   end subroutine check_plane_pair
 
    !> Whether the faces of surface `surface` are edges of plane elements.
    logical function plane_surface(model, surface)
       type(model_t), intent(in) :: model
       integer, intent(in) :: surface
-      plane_surface = .false.
-      if (size(model%mesh%surfaces(surface)%elements) == 0) return
-      plane_surface = model%mesh%cell_dimension(model%mesh%surfaces(surface)%elements(1)) == 2
+      plane_surface = plane_edges(model%mesh, model%mesh%surfaces(surface))
    end function plane_surface
 
    !> The keywords after the surfaces, in any order: the rigid plane, the laws, their
@@ -356,8 +380,9 @@ contains
    !> DISCRETIZATION Mortar supports one pass against a deformable master with METHOD Penalty
    !> (with or without friction), and has no choice of normals (the slave surface's averaged nodal
    !> normals): anything else is reported at its keyword or value.
-   subroutine check_mortar(reader, line, options, pair, ok)
+   subroutine check_mortar(reader, model, line, options, pair, ok)
       type(deck_reader_t), intent(inout) :: reader
+      type(model_t), intent(in) :: model
       type(deck_line_t), intent(in) :: line
       type(pair_options_t), intent(in) :: options
       type(contact_pair_t), intent(in) :: pair
@@ -366,6 +391,10 @@ contains
       if (.not. (ok .and. options%mortar)) return
       if (options%rigid) then
          call reader%report(line, 6, what//'needs a deformable master surface, not a RIGID_PLANE')
+      else if (plane_surface(model, pair%master_surface)) then
+         call reader%report(line, options%discretization_token, what//'between plane bodies is not supported '// &
+                            'yet (surface "'//model%mesh%surfaces(pair%master_surface)%name//'" holds edges of '// &
+                            'plane elements): use DISCRETIZATION NodeToSegment')
       else if (options%passes == 2) then
          call reader%report(line, options%passes_token, what//'has one pass: PASSES 2 is node-to-segment''s')
       else if (pair%parameters%normal%name /= 'PENALTY') then
@@ -500,7 +529,7 @@ contains
                       'PENALTY_FACTOR belongs to an automatic EPSN (a pair without EPSN)')
       if (ok) call set_tangential_method(reader, line, options, pair, ok)
       pair%penalty_factor = options%penalty_factor
-      call check_mortar(reader, line, options, pair, ok)
+      call check_mortar(reader, model, line, options, pair, ok)
       pair%mortar = options%mortar
       if (ok .and. .not. pair%mortar) call set_normals(reader, model, line, options, pair, ok)
    end subroutine make_pair_parameters
@@ -612,6 +641,10 @@ contains
       character(len=:), allocatable :: what
       integer :: n_ring, face_nodes(4)
       if (.not. ok) return
+      ! an edge of a plane body: its patch's ring is the 2 corners of each other edge at its
+      ! two nodes, within max_ring_nodes unless more than 6 such edges meet there (then the
+      ! contact setup reports it: check_patch_rings)
+      if (plane_surface(model, master_surface)) return
       call largest_patch_ring(model%mesh, model%mesh%surfaces(master_surface), feature_angle, n_ring, face_nodes)
       if (n_ring <= max_ring_nodes) return
       what = 'NORMALS '//trim(normals_names(normals))
@@ -655,11 +688,6 @@ contains
       real(dp) :: stiffness, eps_n
       integer :: softer
       character(len=:), allocatable :: derived, note
-      if (plane_surface(model, pair%slave_surface)) then
-         call reader%report(reader%lines(pair%line), 1, 'automatic penalties are derived for the faces of solids '// &
-                            'only: give EPSN and EPST for the edges of plane elements')
-         return
-      end if
       call softer_surface(model, pair, softer, stiffness)
       if (.not. (stiffness > 0.0_dp .and. pair%penalty_factor*stiffness < huge(1.0_dp))) then
          call reader%report(reader%lines(pair%line), 1, 'cannot derive the automatic penalty: M/h of surface '// &

@@ -634,8 +634,8 @@ contains
    end function one_line
    !> Report at (line, column), and set ok false, when surface `surface` holds a face of an
    !> element other than a HEX8: `what` (pressure, contact) integrates only over HEX8 faces so
-   !> far (the edges of plane elements: against a RIGID_PLANE only, frix_deck_contact). The
-   !> message names the cell and the first such element.
+   !> far (the edges of plane elements are taken by frix_deck_contact before). The message
+   !> names the cell and the first such element.
    subroutine require_hex8_faces(self, line, column, mesh, surface, what, ok)
       class(deck_reader_t), intent(inout) :: self
       type(deck_line_t), intent(in) :: line
@@ -646,13 +646,6 @@ contains
       integer :: element
       element = mesh%first_non_hex8_element(surface)
       if (element == 0) return
-      if (mesh%cell_dimension(element) == 2) then
-         call self%report(line, column, what//' between plane bodies is not supported yet, only a plane body '// &
-                          'against a RIGID_PLANE (element '//to_string(mesh%element_ids(element))// &
-                          ' of surface "'//mesh%surfaces(surface)%name//'" is a plane '//mesh%cell_name(element)//')')
-         ok = .false.
-         return
-      end if
       call self%report(line, column, what//' on '//mesh%cell_name(element)//' faces is not supported yet '// &
                        '(element '//to_string(mesh%element_ids(element))//' of surface "'// &
                        mesh%surfaces(surface)%name//'" is a '//mesh%cell_name(element)//')')

@@ -2,12 +2,15 @@
 """V6 Hertz (plane strain): contact pressure of a frix run against Hertz's solution.
 
 usage: v6_hertz_check.py RUN_BASE --load P --radius R --young E --poisson NU
-                         [--check KEY=LO:HI ...] [--csv FILE] [--plot PNG]
+                         [--check KEY=LO:HI ...] [--csv FILE] [--plot PNG] [--listing-reference]
 
 Reads <base>_contact.csv (last increment, pass 1: the cylinder's nodes), <base>.pvd and
 <base>_listing.txt (reference coordinates of the slave nodes). The model is the half model of
 inputs/v6_hertz: cylinder of radius R touching the block at x = 0, symmetry plane x = 0, one
-element through y (both rows y = 0 and y = T are averaged).
+element through y (both rows y = 0 and y = T are averaged). --listing-reference: the
+reference x of a slave node is its current x (contact table) less its u_x of the listing's
+last increment, no .pvd read (plane models of tests/plane: their VTK quads are not read by
+postproc/frix_results).
 Hertz (Johnson, Contact Mechanics, 1985, eqs. 4.43-4.45; two cylinders / cylinder on a
 half-space, same E and nu on both sides):
     1/E* = 2 (1 - nu^2)/E,  a = sqrt(4 P R/(pi E*)),  p0 = 2 P/(pi a),
@@ -50,6 +53,8 @@ def main(argv=None):
     parser.add_argument("--csv", default=None, help="write x, p, p_Hertz per node")
     parser.add_argument("--plot", default=None, help="PNG of p(x) against Hertz")
     parser.add_argument("--label", default=None)
+    parser.add_argument("--listing-reference", action="store_true",
+                        help="reference x from the contact table's x and the listing's u_x")
     args = parser.parse_args(argv)
 
     e_star = args.young / (2.0 * (1.0 - args.poisson ** 2))
@@ -59,11 +64,16 @@ def main(argv=None):
     data = np.genfromtxt(args.base + "_contact.csv", delimiter=",", names=True)
     data = data[(data["step"] == data["step"][-1]) & (data["increment"] == data["increment"][-1])
                 & (data["pass"] == 1)]
-    series = fr.ResultSeries(args.base + ".pvd")
-    mesh = series.mesh(series.select("last")[0])
-    ids = fr.node_ids(series, mesh)
-    index_of = {int(n): k for k, n in enumerate(ids)}
-    x_ref = np.array([mesh.points[index_of[int(n)], 0] for n in data["node"]])
+    if args.listing_reference:
+        _, labels, keys, values = fr.read_listing(args.base + "_listing.txt")[-1].blocks["NODAL DISPLACEMENTS"]
+        u_x = dict(zip(keys, values[:, labels.index("UX")]))
+        x_ref = np.array([x - u_x[int(n)] for x, n in zip(data["x"], data["node"])])
+    else:
+        series = fr.ResultSeries(args.base + ".pvd")
+        mesh = series.mesh(series.select("last")[0])
+        ids = fr.node_ids(series, mesh)
+        index_of = {int(n): k for k, n in enumerate(ids)}
+        x_ref = np.array([mesh.points[index_of[int(n)], 0] for n in data["node"]])
     # average the y = 0 and y = T rows (same reference x)
     keys = np.round(x_ref / (1e-9 * args.radius)).astype(np.int64)
     unique_keys, inverse = np.unique(keys, return_inverse=True)

@@ -16,6 +16,13 @@
       free end's u_x (u1_n31) within the 6 % of benchmark S1 of Hird & Russell's solution
       (postproc/s1_analytical.py) and below it (the 1D theory ignores the shear lag over H).
 
+  check_plane.py OUT BASE contact_patch --pressure P --poisson NU --tolerance T [--axisymmetric]
+      Contact patch test (contact_patch_plane.dck, contact_patch_axisym.dck): at the last
+      increment every integration point's stress is the uniaxial sigma_yy = -P, sigma_zz = -NU P
+      (plane strain; 0, the hoop stress, with --axisymmetric), the other components 0, and
+      every slave node of the contact CSV (both passes) has pressure P and no tangential
+      traction; each within T of P.
+
 OUT is the run's output folder, BASE the deck's name (files OUT/BASE.h5, OUT/BASE_history.csv).
 Exit 0 if every check holds.
 """
@@ -68,6 +75,30 @@ def check_patch(args):
         text += f", strain error {e_error:.2e}"
     print(text + f" (relative; exact sigma = {np.array2string(sigma, precision=6)})")
     return 0 if max(errors) <= TOLERANCE else 1
+
+
+def check_contact_patch(args):
+    import h5py
+    p = args.pressure
+    with h5py.File(pathlib.Path(args.out) / f"{args.base}.h5", "r") as f:
+        last = f["/increments"][sorted(f["/increments"], key=int)[-1]]
+        stress = last["stress"][()][:, :QUAD4_POINTS, :]
+    exact = np.array([0.0, -p, 0.0 if args.axisymmetric else -args.poisson * p, 0.0, 0.0, 0.0])
+    s_error = np.abs(stress - exact).max() / p
+    with open(pathlib.Path(args.out) / f"{args.base}_contact.csv") as f:
+        rows = list(csv.DictReader(row for row in f if not row.startswith("#")))
+    last_time = rows[-1]["time"]
+    rows = [r for r in rows if r["time"] == last_time]
+    pressure = np.array([float(r["pressure"]) for r in rows])
+    traction = np.array([[float(r[f"traction_{c}"]) for c in "xyz"] for r in rows])
+    p_error = np.abs(pressure - p).max() / p
+    t_error = np.abs(traction).max() / p
+    passes = sorted({r["pass"] for r in rows})
+    print(f"{stress.shape[0]} cells: stress error {s_error:.2e}; {len(rows)} slave nodes of passes "
+          f"{' '.join(passes)}: pressure error {p_error:.2e}, tangential traction {t_error:.2e} "
+          f"(relative to p = {p:g}; tolerance {args.tolerance:.1e})")
+    ok = max(s_error, p_error, t_error) <= args.tolerance and len(passes) == 2
+    return 0 if ok else 1
 
 
 def check_history(args):
@@ -126,8 +157,14 @@ def main():
     patch.add_argument("--axisymmetric", action="store_true")
     history.add_argument("checks", nargs="+", metavar="COLUMN[@TIME]=REFERENCE:TOLERANCE")
     sub.add_parser("s1")
+    contact_patch = sub.add_parser("contact_patch")
+    contact_patch.add_argument("--pressure", type=float, required=True)
+    contact_patch.add_argument("--poisson", type=float, required=True)
+    contact_patch.add_argument("--tolerance", type=float, required=True)
+    contact_patch.add_argument("--axisymmetric", action="store_true")
     args = parser.parse_args()
-    return {"patch": check_patch, "history": check_history, "s1": check_s1}[args.what](args)
+    return {"patch": check_patch, "history": check_history, "s1": check_s1,
+            "contact_patch": check_contact_patch}[args.what](args)
 
 
 if __name__ == "__main__":

@@ -13,6 +13,7 @@ program test_contact
    use test_smoothed_normals, only: collect_smoothed_normals
    use test_mortar_contact, only: collect_mortar_contact
    use test_face_grid, only: collect_face_grid
+   use test_plane_faces, only: collect_plane_faces
    implicit none
    call run_suites([new_testsuite('dual_number', collect_dual_number), &
                     new_testsuite('face_projection', collect_face_projection), &
@@ -25,5 +26,6 @@ program test_contact
                     new_testsuite('contact_search', collect_contact_search), &
                     new_testsuite('smoothed_normals', collect_smoothed_normals), &
                     new_testsuite('mortar_contact', collect_mortar_contact), &
-                    new_testsuite('face_grid', collect_face_grid)])
+                    new_testsuite('face_grid', collect_face_grid), &
+                    new_testsuite('plane_faces', collect_plane_faces)])
 end program test_contact
