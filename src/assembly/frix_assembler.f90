@@ -8,6 +8,7 @@ module frix_assembler
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
+   use frix_process_group, only: n_processes, owned_range, sum_over_processes, agree_on_error
    implicit none
    private
 
@@ -20,6 +21,11 @@ contains
    !> at this u) and state%history (material history at this u, from the committed one).
    !> With `gp_stress`/`gp_strain` present, the Cauchy stress and the strain at every
    !> integration point are returned too, (6, n_points, n_elements).
+   !> In a parallel run (frix_process_group) each process evaluates its own elements: fint,
+   !> gp_stress and gp_strain are summed over the processes (every process gets the whole
+   !> vector), the matrix holds this process's elements only, state%alpha and state%history
+   !> are updated for its own elements (commit_solution gathers them); an element that fails
+   !> on one process fails the assembly on all.
    subroutine assemble_internal(model, state, fint, error, matrix, gp_stress, gp_strain)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(inout) :: state
@@ -34,7 +40,7 @@ contains
       !> the element's initial stress (frix_initial_stress); unallocated: none, and the element
       !> sees an absent optional argument (Fortran 2008, 12.5.2.12)
       real(dp), allocatable :: initial(:, :)
-      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block, max_nodes
+      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block, max_nodes, first, last
       type(error_t), allocatable :: element_error
 
       max_nodes = size(model%mesh%connectivity, 1)
@@ -42,7 +48,8 @@ contains
       if (present(matrix)) allocate (element_tangent(3*max_nodes, 3*max_nodes))
       fint = 0.0_dp
       if (present(matrix)) call matrix%zero()
-      do e = 1, model%mesh%n_elements
+      call owned_range(model%mesh%n_elements, first, last)
+      do e = first, last
          block = model%mesh%element_block(e)
          associate (element => model%blocks(block)%element%formulation, &
                     material => model%materials(model%blocks(block)%material)%law, &
@@ -84,7 +91,7 @@ contains
             if (allocated(element_error)) then
                call fatal_error(error, 'element '//to_string(model%mesh%element_ids(e))//': '// &
                                 element_error%message)
-               return
+               exit
             end if
             do a = 1, n_nodes
                node = nodes(a)
@@ -95,7 +102,25 @@ contains
             end if
          end associate
       end do
+      if (n_processes() > 1) then
+         ! the processes' shares summed; a failure of one process is every one's
+         call agree_on_error(error)
+         if (allocated(error)) return
+         call sum_over_processes(fint)
+         if (present(gp_stress)) call sum_element_shares(gp_stress, first, last)
+         if (present(gp_strain)) call sum_element_shares(gp_strain, first, last)
+      end if
    end subroutine assemble_internal
+
+   !> Per-element values (:, :, n_elements) of this process's elements first..last summed over
+   !> the processes (those of the other elements zeroed first): every process gets them all.
+   subroutine sum_element_shares(values, first, last)
+      real(dp), intent(inout), contiguous :: values(:, :, :)
+      integer, intent(in) :: first, last
+      values(:, :, :first - 1) = 0.0_dp
+      values(:, :, last + 1:) = 0.0_dp
+      call sum_over_processes(values)
+   end subroutine sum_element_shares
 
    !> `initial` = the initial stress of element e's points (6, n_points), or unallocated when
    !> it has none.

@@ -30,13 +30,14 @@
 module frix_newton_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use frix_kinds, only: dp
-   use frix_error, only: error_t
+   use frix_error, only: error_t, fatal_error
    use frix_strings, only: to_string
    use frix_stop_request, only: stop_requested
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
    use frix_global_reductions, only: global_norm, global_dot, global_max_abs_location
+   use frix_process_group, only: n_processes, is_root_process, sum_over_processes, agree_on_error
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
@@ -152,6 +153,12 @@ contains
       end if
       call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
       if (allocated(error)) return
+      if (n_processes() > 1 .and. context%solver%name() /= 'PETSC') then
+         call fatal_error(error, model%deck_path//': a run on '//to_string(n_processes())//' MPI processes needs '// &
+                          'SOLVER Petsc (the solver of this deck, '//context%solver%name()// &
+                          ', runs on one process; docs/parallel.md)')
+         return
+      end if
       call context%solver%set_node_coordinates(model%mesh%coords)
       call context%solver%new_matrix(context%matrix)
       if (state%has_contact) then
@@ -290,6 +297,7 @@ contains
          if (state%contact%clamped_unsymmetric) call context%solver%expect_unsymmetric()
       end if
       call context%matrix%get_diagonal(context%diagonal)
+      if (n_processes() > 1) call sum_over_processes(context%diagonal)   ! each process holds its elements' part
    end subroutine evaluate_iterate
 
    !> The level after a Newton step that starts from |r| = residual_norm (acceptance_level_t).
@@ -464,6 +472,8 @@ contains
          ! the value put on the diagonal of constrained equations: the mean |K_ii|
          diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
          if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
+         ! (a parallel run: the processes' matrices are summed, process 0 puts the diagonal)
+         if (.not. is_root_process()) diagonal_scale = 0.0_dp
          call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
          call factorize_and_solve(model, context, inner_error)
          if (allocated(inner_error)) then
@@ -603,6 +613,9 @@ contains
       call check_finite(model, context%fint, 'internal force', failure)
       if (allocated(failure)) return
       lap = wall_clock_seconds()
+      ! contact and loads are evaluated on every process (their state stays the same on all),
+      ! their tangents added by process 0 alone (frix_process_group)
+      context%matrix%ignore_additions = .not. is_root_process()
       if (state%has_contact) then
          if (with_tangent) then
             call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor)
@@ -617,6 +630,7 @@ contains
       else
          call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
+      context%matrix%ignore_additions = .false.
       if (state%has_contact) call check_finite(model, context%fint, 'contact force', failure)
       if (.not. allocated(failure)) call check_finite(model, context%fext, 'external force', failure)
       if (.not. allocated(failure) .and. with_tangent) call check_finite_tangent(model, context%matrix, failure)
@@ -654,6 +668,8 @@ contains
                                               state%contact%passes)
       call context%constraints%condense_vector(context%dependent, context%residual)
       if (with_tangent) call context%constraints%condense_matrix(context%dependent, context%matrix, error)
+      ! (each process's share of the matrix: a pair missing on one is a failure on all)
+      if (with_tangent) call agree_on_error(error)
    end subroutine eliminate_constraints
 
    !> Line search after a Newton correction du with contact, when the residual at u + du is
