@@ -18,6 +18,9 @@ module frix_process_group
 #endif
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
+#ifdef FRIX_WITH_MPI
+   use frix_strings, only: to_string
+#endif
    implicit none
    private
 
@@ -31,7 +34,9 @@ module frix_process_group
 
    integer, save :: ranks = 1        !! number of processes
    integer, save :: rank = 0         !! this process, 0-based
+#ifdef FRIX_WITH_MPI
    logical, save :: mpi_started = .false.   !! MPI_Init called here
+#endif
 
 contains
 
@@ -43,7 +48,7 @@ contains
       if (mpi_started .or. launched_size() <= 1) return
       call MPI_Init(ierr)
       if (ierr /= MPI_SUCCESS) then
-         call fatal_error(error, 'frix: MPI_Init failed, error code '//itoa(ierr))
+         call fatal_error(error, 'frix: MPI_Init failed, error code '//to_string(ierr))
          return
       end if
       mpi_started = .true.
@@ -77,13 +82,6 @@ contains
       end do
    end function launched_size
 
-   function itoa(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buffer
-      write (buffer, '(i0)') i
-      text = trim(buffer)
-   end function itoa
 #endif
 
    integer function n_processes()

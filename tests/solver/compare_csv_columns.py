@@ -5,9 +5,10 @@ Compare two frix CSV files (history or contact table, docs/output.md) column by 
 the same header and rows, text fields equal, and every number within R of itself or within
 A of its column's largest magnitude in OLD (the round-off around zero of two solvers). The
 columns of one vector share that scale: pressure with traction_x, _y, _z (a frictionless
-traction is round-off of the pressure), normal_x, _y, _z, and x, y, z; and the tolerance is
-at least 1e-12 (a column that is round-off around zero throughout, as compare.sh's --floor).
-Lines starting with '#' are left out. Prints the largest relative difference found; exit
+traction is round-off of the pressure), normal_x, _y, _z, and the lengths x, y, z with gap
+and slip (differences of positions: their round-off is that of the positions); and the
+tolerance is at least 1e-12 (a column that is round-off around zero throughout, as
+compare.sh's --floor). Lines starting with '#' are left out. Prints the largest relative difference found; exit
 status 0 equal within tolerance, 1 different.
 """
 import argparse
@@ -20,7 +21,7 @@ def rows(path):
 
 
 GROUPS = ({"pressure", "traction_x", "traction_y", "traction_z"}, {"normal_x", "normal_y", "normal_z"},
-          {"x", "y", "z"})
+          {"x", "y", "z", "gap", "slip"})
 FLOOR = 1e-12
 
 
