@@ -37,7 +37,8 @@ module frix_newton_solver
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
    use frix_global_reductions, only: global_norm, global_dot, global_max_abs_location
-   use frix_process_group, only: n_processes, is_root_process, sum_over_processes, agree_on_error
+   use frix_process_group, only: n_processes, is_root_process, sum_over_processes, agree_on_error, &
+                                 agree_on_failure
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
@@ -219,7 +220,7 @@ contains
       call reserve_iteration_log(report, min(max_iterations, initial_log_length))
 
       do iteration = 0, max_iterations
-         if (stop_requested()) then
+         if (agree_on_failure(stop_requested())) then   ! (on every process alike)
             report%interrupted = .true.
             report%failure = 'stopped by a signal'
             return
