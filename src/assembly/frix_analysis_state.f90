@@ -17,7 +17,7 @@ module frix_analysis_state
    use frix_model, only: model_t
    use frix_contact_assembly, only: contact_system_t, setup_contact, commit_contact
    use frix_contact_augmentation, only: restore_multipliers
-   use frix_process_group, only: n_processes, owned_range, sum_over_processes
+   use frix_process_group, only: gather_owned_elements
    implicit none
    private
 
@@ -98,17 +98,8 @@ contains
    !> (the assembly updates its own only): every process then commits the whole state.
    subroutine commit_solution(state)
       type(analysis_state_t), intent(inout) :: state
-      integer :: first, last, n_elements
-      if (n_processes() > 1) then
-         n_elements = size(state%history, 3)
-         call owned_range(n_elements, first, last)
-         state%alpha(:, :first - 1) = 0.0_dp
-         state%alpha(:, last + 1:) = 0.0_dp
-         state%history(:, :, :first - 1) = 0.0_dp
-         state%history(:, :, last + 1:) = 0.0_dp
-         call sum_over_processes(state%alpha)
-         call sum_over_processes(state%history)
-      end if
+      call gather_owned_elements(state%alpha)
+      call gather_owned_elements(state%history)
       state%committed_time = state%time
       state%committed_u = state%u
       state%committed_alpha = state%alpha

@@ -8,7 +8,8 @@ module frix_assembler
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
-   use frix_process_group, only: n_processes, owned_range, sum_over_processes, agree_on_error
+   use frix_process_group, only: n_processes, owned_range, sum_over_processes, gather_owned_elements, &
+                                 agree_on_error
    implicit none
    private
 
@@ -107,20 +108,10 @@ contains
          call agree_on_error(error)
          if (allocated(error)) return
          call sum_over_processes(fint)
-         if (present(gp_stress)) call sum_element_shares(gp_stress, first, last)
-         if (present(gp_strain)) call sum_element_shares(gp_strain, first, last)
+         if (present(gp_stress)) call gather_owned_elements(gp_stress)
+         if (present(gp_strain)) call gather_owned_elements(gp_strain)
       end if
    end subroutine assemble_internal
-
-   !> Per-element values (:, :, n_elements) of this process's elements first..last summed over
-   !> the processes (those of the other elements zeroed first): every process gets them all.
-   subroutine sum_element_shares(values, first, last)
-      real(dp), intent(inout), contiguous :: values(:, :, :)
-      integer, intent(in) :: first, last
-      values(:, :, :first - 1) = 0.0_dp
-      values(:, :, last + 1:) = 0.0_dp
-      call sum_over_processes(values)
-   end subroutine sum_element_shares
 
    !> `initial` = the initial stress of element e's points (6, n_points), or unallocated when
    !> it has none.

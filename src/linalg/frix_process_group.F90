@@ -25,12 +25,20 @@ module frix_process_group
    private
 
    public :: start_processes, finish_processes, n_processes, process_rank, is_root_process
-   public :: owned_range, sum_over_processes, agree_on_failure, agree_on_error, agree_on_message
+   public :: owned_range, sum_over_processes, gather_owned_elements, agree_on_failure, agree_on_error
+   public :: agree_on_message
 
    !> Sum over the processes, in place; every process gets the sum.
    interface sum_over_processes
       module procedure sum_vector, sum_matrix, sum_array3
    end interface sum_over_processes
+
+   !> Values per element (the last dimension: the elements of the mesh) that each process
+   !> holds for its own elements only (owned_range), whole on every process: the others'
+   !> zeroed, then summed over the processes (exact: x + 0 = x).
+   interface gather_owned_elements
+      module procedure gather_matrix, gather_array3
+   end interface gather_owned_elements
 
    integer, save :: ranks = 1        !! number of processes
    integer, save :: rank = 0         !! this process, 0-based
@@ -130,6 +138,26 @@ contains
       if (ranks > 1) call MPI_Allreduce(MPI_IN_PLACE, x, size(x), MPI_DOUBLE_PRECISION, MPI_SUM, MPI_COMM_WORLD, ierr)
 #endif
    end subroutine sum_array3
+
+   subroutine gather_matrix(values)
+      real(dp), intent(inout), contiguous :: values(:, :)   !! (:, n_elements)
+      integer :: first, last
+      if (ranks <= 1) return
+      call owned_range(size(values, 2), first, last)
+      values(:, :first - 1) = 0.0_dp
+      values(:, last + 1:) = 0.0_dp
+      call sum_over_processes(values)
+   end subroutine gather_matrix
+
+   subroutine gather_array3(values)
+      real(dp), intent(inout), contiguous :: values(:, :, :)   !! (:, :, n_elements)
+      integer :: first, last
+      if (ranks <= 1) return
+      call owned_range(size(values, 3), first, last)
+      values(:, :, :first - 1) = 0.0_dp
+      values(:, :, last + 1:) = 0.0_dp
+      call sum_over_processes(values)
+   end subroutine gather_array3
 
    !> Whether `failed` holds on any process.
    logical function agree_on_failure(failed) result(any_failed)
