@@ -8,7 +8,7 @@ module frix_assembler
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
-   use frix_process_group, only: n_processes, owned_range, sum_over_processes, gather_owned_elements, &
+   use frix_process_group, only: n_processes, owns_element, sum_over_processes, gather_owned_elements, &
                                  agree_on_error
    implicit none
    private
@@ -41,7 +41,7 @@ contains
       !> the element's initial stress (frix_initial_stress); unallocated: none, and the element
       !> sees an absent optional argument (Fortran 2008, 12.5.2.12)
       real(dp), allocatable :: initial(:, :)
-      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block, max_nodes, first, last
+      integer :: e, a, node, n_nodes, n_enhanced, n_state, n_points, block, max_nodes
       type(error_t), allocatable :: element_error
 
       max_nodes = size(model%mesh%connectivity, 1)
@@ -49,8 +49,8 @@ contains
       if (present(matrix)) allocate (element_tangent(3*max_nodes, 3*max_nodes))
       fint = 0.0_dp
       if (present(matrix)) call matrix%zero()
-      call owned_range(model%mesh%n_elements, first, last)
-      do e = first, last
+      do e = 1, model%mesh%n_elements
+         if (.not. owns_element(e)) cycle   ! (another process's, in a parallel run)
          block = model%mesh%element_block(e)
          associate (element => model%blocks(block)%element%formulation, &
                     material => model%materials(model%blocks(block)%material)%law, &

@@ -34,7 +34,7 @@ module frix_driver
    use frix_model_summary, only: model_summary
    use frix_state_restart, only: read_state_restart
    use frix_hdf5_file, only: hdf5_finalize
-   use frix_process_group, only: agree_on_failure
+   use frix_process_group, only: agree_on_failure, n_processes, partition_summary
    use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
    private
@@ -650,6 +650,7 @@ contains
       write (*, '(a)') 'frix: '//model%deck_path//': '//to_string(model%mesh%n_nodes)//' nodes, '// &
          to_string(model%mesh%n_elements)//' elements, '//to_string(3*model%mesh%n_nodes)// &
          ' equations, '//to_string(size(model%steps))//' steps; linear solver '//context%solver%name()
+      if (n_processes() > 1) write (*, '(a)') 'frix: '//partition_summary()   ! (docs/parallel.md)
       do k = 1, size(model%contact_pairs)
          associate (pair => model%contact_pairs(k))
             if (allocated(pair%penalty_note)) &

@@ -38,7 +38,7 @@ module frix_newton_solver
    use frix_system_matrix, only: system_matrix_t
    use frix_global_reductions, only: global_norm, global_dot, global_max_abs_location
    use frix_process_group, only: n_processes, is_root_process, sum_over_processes, agree_on_error, &
-                                 agree_on_failure
+                                 agree_on_failure, partition_mesh
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
@@ -144,6 +144,7 @@ contains
       integer, allocatable :: pairs(:, :), first(:), masters(:)
       integer :: n
       n = 3*model%mesh%n_nodes
+      call partition_mesh(model%mesh%connectivity, model%mesh%n_nodes)   ! (a parallel run: docs/parallel.md)
       if (tied(state)) call add_tie_equations(state%contact%passes, context%constraints)
       call add_coupling_equations(model, context%constraints)
       call context%constraints%pattern_pairs(model%mesh%n_nodes, model%mesh%connectivity, pairs)

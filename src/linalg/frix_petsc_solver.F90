@@ -28,7 +28,7 @@ module frix_petsc_solver
    use frix_strings, only: to_string
    use frix_system_matrix, only: system_matrix_t
    use frix_sparse_matrix, only: sparse_matrix_t
-   use frix_process_group, only: n_processes, owned_range, agree_on_failure
+   use frix_process_group, only: n_processes, node_numbering, agree_on_failure
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, begin_factorize, check_solve_sizes, &
                                  csc_matrix, add_elapsed_seconds, singular_matrix_message, solver_singular, &
                                  solver_failed
@@ -55,10 +55,14 @@ module frix_petsc_solver
       PetscScalar, allocatable, private :: row_values(:)  !! A in compressed rows
       integer, allocatable, private :: mirror(:)   !! CSC position of each compressed-row entry
       PetscScalar, allocatable, private :: coords(:)  !! (3 n_nodes) node positions, x y z per node
-      !> a parallel run (frix_process_group): the rows this process owns, first_row..last_row
-      !> (0-based, whole nodes), the solution and its copy on every process
+      !> a parallel run (frix_process_group): the PETSc row of every equation (0-based, the
+      !> nodes numbered process by process, node_numbering), the rows this process owns,
+      !> first_row..last_row, and its equations in their order (1-based frix equations), the
+      !> solution and its copy on every process
       logical, private :: distributed = .false.
+      PetscInt, allocatable, private :: petsc_row(:)   !! (0:n - 1)
       PetscInt, private :: first_row = 0, last_row = -1
+      integer, allocatable, private :: owned_equations(:)
       type(tVec), private :: b, u, u_all
       type(tVecScatter), private :: to_all
 #endif
@@ -250,11 +254,12 @@ contains
 
    !> factorize in a parallel run (docs/parallel.md): every process holds the whole pattern and
    !> its own share of the values (its elements; process 0 also contact, loads and the
-   !> Dirichlet diagonal); the matrix is a distributed AIJ (MPIAIJ) whose rows are owned in
-   !> contiguous blocks of whole nodes (owned_range over the nodes), preallocated exactly from
-   !> the pattern, and each process adds its share by MatSetValues(ADD_VALUES): its own rows
-   !> whole, the entries it holds of other processes' rows where they are not zero (PETSc
-   !> sends those at the assembly).
+   !> Dirichlet diagonal); the matrix is a distributed AIJ (MPIAIJ) whose rows are those of
+   !> the nodes of the processes' partition, renumbered so that each process owns a
+   !> contiguous block of them (node_numbering), preallocated exactly from the pattern, and
+   !> each process adds its share by MatSetValues(ADD_VALUES): its own rows whole, the entries
+   !> it holds of other processes' rows where they are not zero (PETSc sends those at the
+   !> assembly).
    subroutine factorize_distributed(solver, matrix, csc, col_ptr, row_index, values, start, error)
       class(petsc_solver_t), intent(inout) :: solver
       class(system_matrix_t), intent(in) :: matrix
@@ -293,26 +298,44 @@ contains
       call set_up_factors(solver, matrix%pattern_id, start, error)
    end subroutine factorize_distributed
 
-   !> The MPIAIJ matrix preallocated from the pattern (solver%row_ptr, columns), its vectors,
-   !> the scatter of the solution to every process, and the KSP with frix's defaults.
+   !> The MPIAIJ matrix preallocated from the pattern (solver%row_ptr, columns; the columns
+   !> turned into PETSc's numbering), its vectors, the scatter of the solution to every
+   !> process, and the KSP with frix's defaults.
    subroutine create_distributed(solver, n, n_nodes, ierr)
       class(petsc_solver_t), intent(inout) :: solver
       integer, intent(in) :: n, n_nodes
       PetscErrorCode, intent(out) :: ierr
       PetscInt, allocatable :: diagonal_count(:), off_count(:)
-      PetscInt :: row, p, m
-      integer :: first_node, last_node
-      call owned_range(n_nodes, first_node, last_node)
-      solver%first_row = 3*(first_node - 1)
-      solver%last_row = 3*last_node - 1
+      PetscInt :: row, p, m, local
+      integer, allocatable :: position(:)
+      integer :: first_node, last_node, a, i, e
+      call node_numbering(n_nodes, position, first_node, last_node)
+      if (allocated(solver%petsc_row)) deallocate (solver%petsc_row)
+      allocate (solver%petsc_row(0:n - 1))
+      do a = 1, n_nodes
+         do i = 0, 2
+            solver%petsc_row(3*(a - 1) + i) = 3*position(a) + i
+         end do
+      end do
+      solver%first_row = 3*first_node
+      solver%last_row = 3*last_node + 2
       m = solver%last_row - solver%first_row + 1
+      if (allocated(solver%owned_equations)) deallocate (solver%owned_equations)
+      allocate (solver%owned_equations(m))
+      do e = 0, n - 1
+         if (owned_row(solver, solver%petsc_row(e))) &
+            solver%owned_equations(solver%petsc_row(e) - solver%first_row + 1) = e + 1
+      end do
+      solver%columns = solver%petsc_row(solver%columns)
       allocate (diagonal_count(m), off_count(m), source=int(0, kind(m)))
-      do row = solver%first_row, solver%last_row
+      do row = 0, n - 1
+         if (.not. owned_row(solver, solver%petsc_row(row))) cycle
+         local = solver%petsc_row(row) - solver%first_row + 1
          do p = solver%row_ptr(row) + 1, solver%row_ptr(row + 1)
-            if (solver%columns(p) >= solver%first_row .and. solver%columns(p) <= solver%last_row) then
-               diagonal_count(row - solver%first_row + 1) = diagonal_count(row - solver%first_row + 1) + 1
+            if (owned_row(solver, solver%columns(p))) then
+               diagonal_count(local) = diagonal_count(local) + 1
             else
-               off_count(row - solver%first_row + 1) = off_count(row - solver%first_row + 1) + 1
+               off_count(local) = off_count(local) + 1
             end if
          end do
       end do
@@ -332,6 +355,13 @@ contains
       if (ierr == 0) call create_ksp(solver, PETSC_COMM_WORLD, ierr)
    end subroutine create_distributed
 
+   !> Whether this process owns PETSc row `row` (0-based).
+   pure logical function owned_row(solver, row)
+      class(petsc_solver_t), intent(in) :: solver
+      PetscInt, intent(in) :: row
+      owned_row = row >= solver%first_row .and. row <= solver%last_row
+   end function owned_row
+
    !> The KSP on solver%a with frix's defaults (MUMPS LU) overridden by the PETSc options.
    subroutine create_ksp(solver, communicator, ierr)
       class(petsc_solver_t), intent(inout) :: solver
@@ -347,8 +377,9 @@ contains
       if (ierr == 0) call KSPSetFromOptions(solver%ksp, ierr)
    end subroutine create_ksp
 
-   !> This process's share of the values (solver%row_values, compressed rows) added to the
-   !> zeroed distributed matrix, which is then assembled.
+   !> This process's share of the values (solver%row_values, compressed rows of frix's
+   !> equations; columns in PETSc's numbering) added to the zeroed distributed matrix, which
+   !> is then assembled.
    subroutine add_share(solver, ierr)
       class(petsc_solver_t), intent(inout) :: solver
       PetscErrorCode, intent(out) :: ierr
@@ -360,10 +391,10 @@ contains
       allocate (held_columns(maxval(solver%row_ptr(1:n) - solver%row_ptr(0:n - 1))))
       allocate (held_values(size(held_columns)))
       do r = 0, n - 1
-         row(1) = r
+         row(1) = solver%petsc_row(r)
          first = solver%row_ptr(r) + 1
          last = solver%row_ptr(r + 1)
-         if (r >= solver%first_row .and. r <= solver%last_row) then
+         if (owned_row(solver, row(1))) then
             call MatSetValues(solver%a, 1, row, last - first + 1, solver%columns(first:last), &
                               solver%row_values(first:last), ADD_VALUES, ierr)
          else
@@ -382,7 +413,8 @@ contains
       call MatAssemblyEnd(solver%a, MAT_FINAL_ASSEMBLY, ierr)
    end subroutine add_share
 
-   !> set_rigid_body_modes on the distributed rows: the positions of this process's nodes.
+   !> set_rigid_body_modes on the distributed rows: the positions of this process's nodes, in
+   !> PETSc's numbering.
    subroutine set_distributed_rigid_body_modes(solver, m, n, ierr)
       class(petsc_solver_t), intent(inout) :: solver
       PetscInt, intent(in) :: m
@@ -395,7 +427,7 @@ contains
       if (ierr == 0) call VecSetBlockSize(positions, 3, ierr)
       if (ierr == 0) call VecGetArrayF90(positions, local, ierr)
       if (ierr /= 0) return
-      local = solver%coords(solver%first_row + 1:solver%last_row + 1)
+      local = solver%coords(solver%owned_equations)
       call VecRestoreArrayF90(positions, local, ierr)
       if (ierr == 0) call MatNullSpaceCreateRigidBody(positions, modes, ierr)
       if (ierr == 0) call MatSetNearNullSpace(solver%a, modes, ierr)
@@ -404,7 +436,8 @@ contains
    end subroutine set_distributed_rigid_body_modes
 
    !> KSPSolve of a parallel run: this process's rows of rhs (whole on every process) into the
-   !> distributed right-hand side, the solution copied to every process (VecScatterCreateToAll).
+   !> distributed right-hand side, the solution copied to every process (VecScatterCreateToAll,
+   !> in PETSc's numbering) and put back in frix's.
    subroutine solve_distributed(solver, rhs, x, reason)
       class(petsc_solver_t), intent(inout) :: solver
       real(dp), intent(in) :: rhs(:)
@@ -413,14 +446,14 @@ contains
       PetscScalar, pointer :: local(:)
       PetscErrorCode :: ierr
       call VecGetArrayF90(solver%b, local, ierr)
-      local = rhs(solver%first_row + 1:solver%last_row + 1)
+      local = rhs(solver%owned_equations)
       call VecRestoreArrayF90(solver%b, local, ierr)
       call KSPSolve(solver%ksp, solver%b, solver%u, ierr)
       call KSPGetConvergedReason(solver%ksp, reason, ierr)
       call VecScatterBegin(solver%to_all, solver%u, solver%u_all, INSERT_VALUES, SCATTER_FORWARD, ierr)
       call VecScatterEnd(solver%to_all, solver%u, solver%u_all, INSERT_VALUES, SCATTER_FORWARD, ierr)
       call VecGetArrayReadF90(solver%u_all, local, ierr)
-      x = local
+      x = local(solver%petsc_row + 1)
       call VecRestoreArrayReadF90(solver%u_all, local, ierr)
    end subroutine solve_distributed
 

@@ -1,9 +1,11 @@
 !> The processes of a run: one in a serial run, P under `mpirun -n P frix DECK` in a frix built
 !> with PETSc (docs/parallel.md). Every process reads the deck and holds the whole model and
-!> state (replicated); the elements are divided among the processes in contiguous blocks of
-!> the deck's element order (`owned_range`), each process evaluates its own, and the sums here
-!> (MPI_Allreduce over MPI_COMM_WORLD) give every process the whole vector. Process 0 (the
-!> root) alone writes output.
+!> state (replicated); the elements and nodes are divided among the processes by a METIS
+!> partition of the mesh (`partition_mesh`; contiguous blocks of the element and node numbers
+!> when METIS cannot make one), each process evaluates its own elements (`owns_element`),
+!> and the sums here (MPI_Allreduce over MPI_COMM_WORLD) give every process the whole
+!> vector. The matrix rows of a process are those of its nodes (`node_numbering`). Process 0
+!> (the root) alone writes output.
 !>
 !> MPI is started only when the launcher says there is more than one process
 !> (OMPI_COMM_WORLD_SIZE of OpenMPI's mpirun, or PMI_SIZE): a serial run of a PETSc build
@@ -18,15 +20,14 @@ module frix_process_group
 #endif
    use frix_kinds, only: dp, i8
    use frix_error, only: error_t, fatal_error
-#ifdef FRIX_WITH_MPI
+   use frix_metis_ordering, only: metis_mesh_partition
    use frix_strings, only: to_string
-#endif
    implicit none
    private
 
    public :: start_processes, finish_processes, n_processes, process_rank, is_root_process
-   public :: owned_range, sum_over_processes, gather_owned_elements, agree_on_failure, agree_on_error
-   public :: agree_on_message
+   public :: partition_mesh, owns_element, node_numbering, partition_summary
+   public :: sum_over_processes, gather_owned_elements, agree_on_failure, agree_on_error, agree_on_message
 
    !> Sum over the processes, in place; every process gets the sum.
    interface sum_over_processes
@@ -34,7 +35,7 @@ module frix_process_group
    end interface sum_over_processes
 
    !> Values per element (the last dimension: the elements of the mesh) that each process
-   !> holds for its own elements only (owned_range), whole on every process: the others'
+   !> holds for its own elements only (owns_element), whole on every process: the others'
    !> zeroed, then summed over the processes (exact: x + 0 = x).
    interface gather_owned_elements
       module procedure gather_matrix, gather_array3
@@ -42,6 +43,10 @@ module frix_process_group
 
    integer, save :: ranks = 1        !! number of processes
    integer, save :: rank = 0         !! this process, 0-based
+   !> the process owning each element and each node (partition_mesh); unallocated in a
+   !> serial run
+   integer, allocatable, save :: element_owner(:), node_owner(:)
+   logical, save :: metis_partition = .false.   !! made by METIS (else contiguous blocks)
 #ifdef FRIX_WITH_MPI
    logical, save :: mpi_started = .false.   !! MPI_Init called here
 #endif
@@ -106,14 +111,109 @@ contains
       is_root_process = rank == 0
    end function is_root_process
 
-   !> This process's share of items 1..n: the contiguous block first..last (ranks in order,
-   !> sizes differing by one at most); 1..n in a serial run.
-   subroutine owned_range(n, first, last)
+   !> The partition of the mesh among the processes (every process calls it, with the same
+   !> mesh): METIS_PartMeshDual computed by process 0 and sent to the others; contiguous
+   !> blocks of the element and of the node numbers when the mesh has fewer elements than
+   !> processes or METIS fails. Nothing in a serial run.
+   subroutine partition_mesh(connectivity, n_nodes)
+      integer, intent(in) :: connectivity(:, :)   !! (nodes per element, n_elements), 0: padding
+      integer, intent(in) :: n_nodes
+      type(error_t), allocatable :: error
+#ifdef FRIX_WITH_MPI
+      integer :: ierr
+#endif
+      if (ranks <= 1) return
+      if (rank == 0) then
+         if (size(connectivity, 2) >= ranks) &
+            call metis_mesh_partition(connectivity, n_nodes, ranks, element_owner, node_owner, error)
+         metis_partition = size(connectivity, 2) >= ranks .and. .not. allocated(error)
+         if (.not. metis_partition) then
+            call block_owners(size(connectivity, 2), element_owner)
+            call block_owners(n_nodes, node_owner)
+         end if
+      else
+         allocate (element_owner(size(connectivity, 2)), node_owner(n_nodes))
+      end if
+#ifdef FRIX_WITH_MPI
+      call MPI_Bcast(element_owner, size(element_owner), MPI_INTEGER, 0, MPI_COMM_WORLD, ierr)
+      call MPI_Bcast(node_owner, size(node_owner), MPI_INTEGER, 0, MPI_COMM_WORLD, ierr)
+#endif
+   end subroutine partition_mesh
+
+   !> For the run's banner: how the mesh is divided, e.g. "2 MPI processes, a METIS partition:
+   !> elements 62 62, nodes 170 152"; '' in a serial run (process 0's view).
+   function partition_summary() result(text)
+      character(len=:), allocatable :: text
+      integer :: r
+      text = ''
+      if (.not. allocated(element_owner)) return
+      text = to_string(ranks)//' MPI processes, '//trim(merge('a METIS partition   ', 'contiguous blocks   ', &
+                                                                metis_partition))//': elements'
+      do r = 0, ranks - 1
+         text = text//' '//to_string(count(element_owner == r))
+      end do
+      text = text//', nodes'
+      do r = 0, ranks - 1
+         text = text//' '//to_string(count(node_owner == r))
+      end do
+   end function partition_summary
+
+   !> owner(k) = the process of item k when items 1..n are divided in contiguous blocks (ranks
+   !> in order, sizes differing by one at most).
+   subroutine block_owners(n, owner)
       integer, intent(in) :: n
+      integer, allocatable, intent(out) :: owner(:)
+      integer :: r, first, last
+      allocate (owner(n))
+      do r = 0, ranks - 1
+         first = int(int(r, i8)*n/ranks) + 1
+         last = int(int(r + 1, i8)*n/ranks)
+         owner(first:last) = r
+      end do
+   end subroutine block_owners
+
+   !> Whether this process evaluates element e (every element in a serial run).
+   pure logical function owns_element(e)
+      integer, intent(in) :: e
+      owns_element = .true.
+      if (allocated(element_owner)) owns_element = element_owner(e) == rank
+   end function owns_element
+
+   !> The numbering of the nodes that gives every process a contiguous block of them, its
+   !> own: position(a) (0-based) of node a, the processes' nodes one process after the other,
+   !> each in increasing node number; this process's nodes are at first..last. The identity
+   !> in a serial run.
+   subroutine node_numbering(n_nodes, position, first, last)
+      integer, intent(in) :: n_nodes
+      integer, allocatable, intent(out) :: position(:)
       integer, intent(out) :: first, last
-      first = int(int(rank, i8)*n/ranks) + 1
-      last = int(int(rank + 1, i8)*n/ranks)
-   end subroutine owned_range
+      integer, allocatable :: next(:)
+      integer :: a, r, count
+      allocate (position(n_nodes))
+      if (.not. allocated(node_owner)) then
+         position = [(a - 1, a = 1, n_nodes)]
+         first = 0
+         last = n_nodes - 1
+         return
+      end if
+      allocate (next(0:ranks - 1), source=0)
+      do a = 1, n_nodes
+         next(node_owner(a)) = next(node_owner(a)) + 1
+      end do
+      ! next(r): the first position of process r's nodes
+      first = 0
+      do r = 0, ranks - 1
+         count = next(r)
+         next(r) = first
+         first = first + count
+      end do
+      first = next(rank)
+      do a = 1, n_nodes
+         position(a) = next(node_owner(a))
+         next(node_owner(a)) = next(node_owner(a)) + 1
+      end do
+      last = next(rank) - 1
+   end subroutine node_numbering
 
    subroutine sum_vector(x)
       real(dp), intent(inout), contiguous :: x(:)
@@ -141,21 +241,21 @@ contains
 
    subroutine gather_matrix(values)
       real(dp), intent(inout), contiguous :: values(:, :)   !! (:, n_elements)
-      integer :: first, last
+      integer :: e
       if (ranks <= 1) return
-      call owned_range(size(values, 2), first, last)
-      values(:, :first - 1) = 0.0_dp
-      values(:, last + 1:) = 0.0_dp
+      do e = 1, size(values, 2)
+         if (.not. owns_element(e)) values(:, e) = 0.0_dp
+      end do
       call sum_over_processes(values)
    end subroutine gather_matrix
 
    subroutine gather_array3(values)
       real(dp), intent(inout), contiguous :: values(:, :, :)   !! (:, :, n_elements)
-      integer :: first, last
+      integer :: e
       if (ranks <= 1) return
-      call owned_range(size(values, 3), first, last)
-      values(:, :, :first - 1) = 0.0_dp
-      values(:, :, last + 1:) = 0.0_dp
+      do e = 1, size(values, 3)
+         if (.not. owns_element(e)) values(:, :, e) = 0.0_dp
+      end do
       call sum_over_processes(values)
    end subroutine gather_array3
 
