@@ -63,8 +63,9 @@ contains
 
    !> The elements and nodes of a mesh divided into n_parts parts (METIS_PartMeshDual, METIS 5
    !> manual: elements are neighbours in the dual graph when they share `n_common` nodes, 2 here:
-   !> an edge of a plane or a solid element; each node goes to a part of one of its elements).
-   !> Parts are 0-based. Error: METIS's status.
+   !> an edge of a plane or a solid element). Each node goes to the part of its first element
+   !> (METIS's own node partition leaves the nodes of no element undefined), a node of no
+   !> element (a coupling's reference node) to part 0. Parts are 0-based. Error: METIS's status.
    subroutine metis_mesh_partition(connectivity, n_nodes, n_parts, element_part, node_part, error)
       integer, intent(in) :: connectivity(:, :)   !! (nodes per element, n_elements), 0: padding
       integer, intent(in) :: n_nodes, n_parts
@@ -95,7 +96,14 @@ contains
          return
       end if
       element_part = int(epart(:size(connectivity, 2)))
-      node_part = int(npart(:n_nodes))
+      allocate (node_part(n_nodes), source=-1)
+      do e = 1, size(connectivity, 2)
+         do k = 1, size(connectivity, 1)
+            if (connectivity(k, e) <= 0) cycle
+            if (node_part(connectivity(k, e)) < 0) node_part(connectivity(k, e)) = element_part(e)
+         end do
+      end do
+      where (node_part < 0) node_part = 0
    end subroutine metis_mesh_partition
 
    !> DOF permutation (0-based, size matrix%n) in the METIS/CHOLMOD `perm` convention:
