@@ -35,9 +35,14 @@ if(FRIX_PETSC)
     ENVIRONMENT "PETSC_OPTIONS=-ksp_type gmres -pc_type gamg -ksp_rtol 1e-12")
   # mpirun -n 2 (docs/parallel.md), labels petsc and mpi: the plastic restart deck (material
   # history) on 2 processes and restarted between 1 and 2 processes; and (mpi_cases, in the
-  # loop above) the deck with SOLVER Petsc on 2 processes against the deck's own solver on
-  # one, listing and every CSV column to 1e-8: S1 (contact, deformable base), V5 (two
-  # passes), S4 (Coulomb friction).
+  # loop above, and a rigid punch on mortar contact driven through a kinematic coupling,
+  # whose reference nodes belong to no element) the deck with SOLVER Petsc on 2 processes
+  # against the deck's own solver on one, listing and every CSV column to 1e-8: S1 (contact,
+  # deformable base), V5 (two passes), S4 (Coulomb friction).
+  add_test(NAME mpi2_rigid_punch_mortar
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/solver_equivalence.sh ${FRIX_BIN}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/coupling/rigid_punch_mortar.dck Petsc --ranks 2)
+  set_tests_properties(mpi2_rigid_punch_mortar PROPERTIES LABELS "petsc;mpi;regression" TIMEOUT ${scaled_300})
   add_test(NAME mpi2_restart_plastic
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/solver/mpi_restart_test.sh ${FRIX_BIN}
                    ${CMAKE_CURRENT_SOURCE_DIR}/restart/restart_plastic.dck 2.2)
