@@ -25,7 +25,7 @@ module frix_process_group
    implicit none
    private
 
-   public :: start_processes, finish_processes, n_processes, process_rank, is_root_process
+   public :: start_processes, finish_processes, n_processes, is_root_process
    public :: partition_mesh, owns_element, node_numbering, partition_summary
    public :: sum_over_processes, gather_owned_elements, agree_on_failure, agree_on_error, agree_on_message
 
@@ -100,11 +100,6 @@ contains
    integer function n_processes()
       n_processes = ranks
    end function n_processes
-
-   !> This process, 0 to n_processes() - 1.
-   integer function process_rank()
-      process_rank = rank
-   end function process_rank
 
    !> Whether this is process 0, the one that writes output.
    logical function is_root_process()
