@@ -10,6 +10,7 @@ program frix
    use frix_process, only: exit_with_status, keep_freed_memory
    use frix_stop_request, only: install_stop_handlers, stop_requested
    use frix_version_info, only: write_version_report
+   use frix_process_group, only: start_processes, finish_processes, is_root_process
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    type(run_options_t) :: options
@@ -28,14 +29,27 @@ program frix
       if (status == 1) call exit_with_status(0)
       call exit_with_status(2)
    end if
-   call run_deck(options, error)
+   call start_processes(error)
+   if (.not. allocated(error)) then
+      call silence_other_processes()
+      call run_deck(options, error)
+   end if
+   call finish_processes()
    if (allocated(error)) then
-      write (0, '(a)') error%message
+      if (is_root_process()) write (0, '(a)') error%message
       if (stop_requested()) call exit_with_status(3)
       call exit_with_status(1)
    end if
 
 contains
+
+   !> Under `mpirun -n P` (docs/parallel.md) process 0 alone prints: the others' standard
+   !> output goes to /dev/null (their errors are process 0's too).
+   subroutine silence_other_processes()
+      integer :: stat
+      if (is_root_process()) return
+      open (unit=output_unit, file='/dev/null', action='write', iostat=stat)
+   end subroutine silence_other_processes
 
    subroutine parse_command_line(options, status)
       type(run_options_t), intent(out) :: options

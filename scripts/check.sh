@@ -21,7 +21,7 @@
 #   scripts/check.sh petsc [extra ctest arguments]
 #       Installs Debian's PETSc (scripts/setup.sh --petsc), builds frix with it in build-petsc
 #       and runs the tests labelled petsc there (SOLVER Petsc against the deck's own solver,
-#       tests/solver/petsc.cmake). Prints the wall time.
+#       also on 2 MPI processes, tests/solver/petsc.cmake). Prints the wall time.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 

@@ -17,6 +17,7 @@ module frix_analysis_state
    use frix_model, only: model_t
    use frix_contact_assembly, only: contact_system_t, setup_contact, commit_contact
    use frix_contact_augmentation, only: restore_multipliers
+   use frix_process_group, only: gather_owned_elements
    implicit none
    private
 
@@ -92,9 +93,13 @@ contains
    end subroutine commit_state
 
    !> Accept the current time, displacements, EAS parameters and material history (not the
-   !> contact state, whose committed part commit_contact takes from a converged iterate).
+   !> contact state, whose committed part commit_contact takes from a converged iterate). In a
+   !> parallel run each process's elements' EAS parameters and history are gathered first
+   !> (the assembly updates its own only): every process then commits the whole state.
    subroutine commit_solution(state)
       type(analysis_state_t), intent(inout) :: state
+      call gather_owned_elements(state%alpha)
+      call gather_owned_elements(state%history)
       state%committed_time = state%time
       state%committed_u = state%u
       state%committed_alpha = state%alpha

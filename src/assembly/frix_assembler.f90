@@ -8,6 +8,8 @@ module frix_assembler
    use frix_model, only: model_t
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
+   use frix_process_group, only: n_processes, owns_element, sum_over_processes, gather_owned_elements, &
+                                 agree_on_error
    implicit none
    private
 
@@ -20,6 +22,11 @@ contains
    !> at this u) and state%history (material history at this u, from the committed one).
    !> With `gp_stress`/`gp_strain` present, the Cauchy stress and the strain at every
    !> integration point are returned too, (6, n_points, n_elements).
+   !> In a parallel run (frix_process_group) each process evaluates its own elements: fint,
+   !> gp_stress and gp_strain are summed over the processes (every process gets the whole
+   !> vector), the matrix holds this process's elements only, state%alpha and state%history
+   !> are updated for its own elements (commit_solution gathers them); an element that fails
+   !> on one process fails the assembly on all.
    subroutine assemble_internal(model, state, fint, error, matrix, gp_stress, gp_strain)
       type(model_t), intent(in) :: model
       type(analysis_state_t), intent(inout) :: state
@@ -43,6 +50,7 @@ contains
       fint = 0.0_dp
       if (present(matrix)) call matrix%zero()
       do e = 1, model%mesh%n_elements
+         if (.not. owns_element(e)) cycle   ! (another process's, in a parallel run)
          block = model%mesh%element_block(e)
          associate (element => model%blocks(block)%element%formulation, &
                     material => model%materials(model%blocks(block)%material)%law, &
@@ -84,7 +92,7 @@ contains
             if (allocated(element_error)) then
                call fatal_error(error, 'element '//to_string(model%mesh%element_ids(e))//': '// &
                                 element_error%message)
-               return
+               exit
             end if
             do a = 1, n_nodes
                node = nodes(a)
@@ -95,6 +103,14 @@ contains
             end if
          end associate
       end do
+      if (n_processes() > 1) then
+         ! the processes' shares summed; a failure of one process is every one's
+         call agree_on_error(error)
+         if (allocated(error)) return
+         call sum_over_processes(fint)
+         if (present(gp_stress)) call gather_owned_elements(gp_stress)
+         if (present(gp_strain)) call gather_owned_elements(gp_strain)
+      end if
    end subroutine assemble_internal
 
    !> `initial` = the initial stress of element e's points (6, n_points), or unallocated when

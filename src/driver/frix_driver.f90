@@ -34,6 +34,7 @@ module frix_driver
    use frix_model_summary, only: model_summary
    use frix_state_restart, only: read_state_restart
    use frix_hdf5_file, only: hdf5_finalize
+   use frix_process_group, only: agree_on_failure, n_processes, partition_summary
    use frix_stop_request, only: stop_requested, stop_signal_name
    implicit none
    private
@@ -259,7 +260,7 @@ contains
          if (allocated(error)) return
       end if
       do while (state%committed_time < control%step_end - 1.0e-12_dp .and. .not. control%target_reached)
-         if (stop_requested()) then
+         if (agree_on_failure(stop_requested())) then   ! (on every process alike)
             call stopped_error(step, output, state, error)
             return
          end if
@@ -650,6 +651,7 @@ contains
       write (*, '(a)') 'frix: '//model%deck_path//': '//to_string(model%mesh%n_nodes)//' nodes, '// &
          to_string(model%mesh%n_elements)//' elements, '//to_string(3*model%mesh%n_nodes)// &
          ' equations, '//to_string(size(model%steps))//' steps; linear solver '//context%solver%name()
+      if (n_processes() > 1) write (*, '(a)') 'frix: '//partition_summary()   ! (docs/parallel.md)
       do k = 1, size(model%contact_pairs)
          associate (pair => model%contact_pairs(k))
             if (allocated(pair%penalty_note)) &

@@ -8,6 +8,7 @@ module frix_equation_checks
    use frix_finite_check, only: first_non_finite
    use frix_model, only: model_t
    use frix_system_matrix, only: system_matrix_t
+   use frix_process_group, only: agree_on_message
    implicit none
    private
 
@@ -31,7 +32,8 @@ contains
    end subroutine check_finite
 
    !> check_finite for the tangent matrix: names the column (equation) of the first
-   !> non-finite entry.
+   !> non-finite entry. In a parallel run each process checks its share of the matrix and the
+   !> failure of the lowest process that has one becomes every process's.
    subroutine check_finite_tangent(model, matrix, failure)
       type(model_t), intent(in) :: model
       class(system_matrix_t), intent(in) :: matrix
@@ -39,9 +41,9 @@ contains
       integer :: column
       real(dp) :: value
       call matrix%first_non_finite_column(column, value)
-      if (column == 0) return
-      failure = 'the tangent stiffness is not finite ('//to_string(value)//') in the column of '// &
-                equation_label(model, column)
+      if (column /= 0) failure = 'the tangent stiffness is not finite ('//to_string(value)//') in the column of '// &
+                                 equation_label(model, column)
+      call agree_on_message(failure)
    end subroutine check_finite_tangent
 
    !> Name the node and direction where the factorization broke down.

@@ -37,6 +37,8 @@ module frix_newton_solver
    use frix_analysis_state, only: analysis_state_t
    use frix_system_matrix, only: system_matrix_t
    use frix_global_reductions, only: global_norm, global_dot, global_max_abs_location
+   use frix_process_group, only: n_processes, is_root_process, sum_over_processes, agree_on_error, &
+                                 agree_on_failure, partition_mesh
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds
    use frix_linear_solver_registry, only: create_linear_solver
    use frix_assembler, only: assemble_internal, internal_tangent_symmetric
@@ -152,6 +154,7 @@ contains
       integer, allocatable :: pairs(:, :), first(:), masters(:)
       integer :: n
       n = 3*model%mesh%n_nodes
+      call partition_mesh(model%mesh%connectivity, model%mesh%n_nodes)   ! (a parallel run: docs/parallel.md)
       if (tied(state)) call add_tie_equations(state%contact%passes, context%constraints)
       call add_coupling_equations(model, context%constraints)
       call context%constraints%pattern_pairs(model%mesh%n_nodes, model%mesh%connectivity, pairs)
@@ -162,6 +165,12 @@ contains
       end if
       call create_linear_solver(model%controls%linear_solver, context%solver, error, symmetric=context%symmetric)
       if (allocated(error)) return
+      if (n_processes() > 1 .and. context%solver%name() /= 'PETSC') then
+         call fatal_error(error, model%deck_path//': a run on '//to_string(n_processes())//' MPI processes needs '// &
+                          'SOLVER Petsc (the solver of this deck, '//context%solver%name()// &
+                          ', runs on one process; docs/parallel.md)')
+         return
+      end if
       call context%solver%set_node_coordinates(model%mesh%coords)
       call context%solver%new_matrix(context%matrix)
       if (state%has_contact) then
@@ -222,7 +231,7 @@ contains
       call reserve_iteration_log(report, min(max_iterations, initial_log_length))
 
       do iteration = 0, max_iterations
-         if (stop_requested()) then
+         if (agree_on_failure(stop_requested())) then   ! (on every process alike)
             report%interrupted = .true.
             report%failure = 'stopped by a signal'
             return
@@ -300,6 +309,7 @@ contains
          if (state%contact%clamped_unsymmetric) call context%solver%expect_unsymmetric()
       end if
       call context%matrix%get_diagonal(context%diagonal)
+      if (n_processes() > 1) call sum_over_processes(context%diagonal)   ! each process holds its elements' part
    end subroutine evaluate_iterate
 
    !> Count the Newton steps the line search cut below short_step in a row (fraction: the
@@ -486,6 +496,8 @@ contains
          ! the value put on the diagonal of constrained equations: the mean |K_ii|
          diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
          if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
+         ! (a parallel run: the processes' matrices are summed, process 0 puts the diagonal)
+         if (.not. is_root_process()) diagonal_scale = 0.0_dp
          call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
          call factorize_and_solve(model, context, inner_error)
          if (allocated(inner_error) .and. state%has_contact) then
@@ -668,6 +680,9 @@ contains
       call check_finite(model, context%fint, 'internal force', failure)
       if (allocated(failure)) return
       lap = wall_clock_seconds()
+      ! contact and loads are evaluated on every process (their state stays the same on all),
+      ! their tangents added by process 0 alone (frix_process_group)
+      context%matrix%ignore_additions = .not. is_root_process()
       if (state%has_contact) then
          if (with_tangent) then
             call assemble_contact(model, state%contact, state%u, context%fint, context%matrix, predictor, open_band)
@@ -682,6 +697,7 @@ contains
       else
          call assemble_external(model, time, state%u, context%fext, step_window=context%step_window)
       end if
+      context%matrix%ignore_additions = .false.
       if (state%has_contact) call check_finite(model, context%fint, 'contact force', failure)
       if (.not. allocated(failure)) call check_finite(model, context%fext, 'external force', failure)
       if (.not. allocated(failure) .and. with_tangent) call check_finite_tangent(model, context%matrix, failure)
@@ -719,6 +735,8 @@ contains
                                               state%contact%passes)
       call context%constraints%condense_vector(context%dependent, context%residual)
       if (with_tangent) call context%constraints%condense_matrix(context%dependent, context%matrix, error)
+      ! (each process's share of the matrix: a pair missing on one is a failure on all)
+      if (with_tangent) call agree_on_error(error)
    end subroutine eliminate_constraints
 
    !> Line search after a Newton correction du with contact, when the residual at u + du is

@@ -18,6 +18,7 @@ module frix_results_output
    use frix_text_output, only: text_file_t
    use frix_strings, only: to_string, to_lower, to_upper
    use frix_contact_assembly, only: contact_table_labels
+   use frix_process_group, only: is_root_process
    implicit none
    private
 
@@ -33,6 +34,9 @@ module frix_results_output
       logical :: hdf5_open = .false.
       logical :: pos3d_open = .false.
       type(text_file_t) :: contact_csv    !! <base>_contact.csv
+      !> this process writes the files: process 0 alone in a parallel run (frix_process_group),
+      !> the others collect the same results and write nothing
+      logical :: writes = .true.
    contains
       procedure :: open => output_open
       procedure :: write_increment => output_write_increment
@@ -48,6 +52,8 @@ contains
       character(len=*), intent(in) :: base   !! path prefix of every result file
       type(error_t), allocatable, intent(out) :: error
       integer :: slash, status
+      self%writes = is_root_process()
+      if (.not. self%writes) return
       slash = index(base, '/', back=.true.)
       if (slash > 1) then
          call execute_command_line('mkdir -p "'//base(:slash - 1)//'" 2> /dev/null', exitstat=status)
@@ -149,6 +155,7 @@ contains
       type(increment_results_t), intent(in) :: results
       type(error_t), allocatable, intent(out) :: error
       self%n_increments = self%n_increments + 1
+      if (.not. self%writes) return
       if (self%history%is_open()) then
          call self%history%append(results%step, results%increment, results%time, results%history_values, error)
          if (allocated(error)) return

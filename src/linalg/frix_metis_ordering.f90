@@ -7,6 +7,9 @@
 !> This is exactly CHOLMOD's UserPerm convention ("Perm[k] = i means row i of A is the k-th
 !> row of PAP'"), so `perm` (not `iperm`) is handed to CHOLMOD, as SuiteSparse_long for its
 !> 64-bit interface (`cholmod_l_analyze_p`).
+!>
+!> Also the partition of a mesh among processes (`metis_mesh_partition`, METIS_PartMeshDual:
+!> the elements by their dual graph, each node to one part; frix_process_group).
 module frix_metis_ordering
    use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_ptr, c_null_ptr
    use frix_kinds, only: i8, i4
@@ -16,7 +19,7 @@ module frix_metis_ordering
    implicit none
    private
 
-   public :: metis_dof_permutation
+   public :: metis_dof_permutation, metis_mesh_partition
 
    integer, parameter :: metis_noptions = 40    !! METIS_NOPTIONS in metis.h
    integer(c_int), parameter :: metis_ok = 1    !! METIS_OK in metis.h
@@ -40,9 +43,68 @@ module frix_metis_ordering
          integer(c_int32_t), intent(out) :: iperm(*)
          integer(c_int) :: status
       end function metis_node_nd
+
+      function metis_part_mesh_dual(n_elements, n_nodes, eptr, eind, vwgt, vsize, ncommon, nparts, tpwgts, &
+                                    options, objval, epart, npart) bind(C, name='METIS_PartMeshDual') result(status)
+         import :: c_int, c_int32_t, c_ptr
+         integer(c_int32_t), intent(in) :: n_elements, n_nodes
+         integer(c_int32_t), intent(inout) :: eptr(*), eind(*)
+         type(c_ptr), value :: vwgt, vsize
+         integer(c_int32_t), intent(in) :: ncommon, nparts
+         type(c_ptr), value :: tpwgts
+         integer(c_int32_t), intent(inout) :: options(*)
+         integer(c_int32_t), intent(out) :: objval
+         integer(c_int32_t), intent(out) :: epart(*), npart(*)
+         integer(c_int) :: status
+      end function metis_part_mesh_dual
    end interface
 
 contains
+
+   !> The elements and nodes of a mesh divided into n_parts parts (METIS_PartMeshDual, METIS 5
+   !> manual: elements are neighbours in the dual graph when they share `n_common` nodes, 2 here:
+   !> an edge of a plane or a solid element). Each node goes to the part of its first element
+   !> (METIS's own node partition leaves the nodes of no element undefined), a node of no
+   !> element (a coupling's reference node) to part 0. Parts are 0-based. Error: METIS's status.
+   subroutine metis_mesh_partition(connectivity, n_nodes, n_parts, element_part, node_part, error)
+      integer, intent(in) :: connectivity(:, :)   !! (nodes per element, n_elements), 0: padding
+      integer, intent(in) :: n_nodes, n_parts
+      integer, allocatable, intent(out) :: element_part(:), node_part(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(c_int32_t), allocatable :: eptr(:), eind(:), epart(:), npart(:)
+      integer(c_int32_t) :: options(metis_noptions), objval
+      integer(c_int) :: status
+      integer :: e, k, position
+      allocate (eptr(size(connectivity, 2) + 1), eind(max(1, count(connectivity > 0))))
+      allocate (epart(max(1, size(connectivity, 2))), npart(max(1, n_nodes)))
+      position = 0
+      eptr(1) = 0
+      do e = 1, size(connectivity, 2)
+         do k = 1, size(connectivity, 1)
+            if (connectivity(k, e) <= 0) cycle
+            position = position + 1
+            eind(position) = int(connectivity(k, e) - 1, c_int32_t)
+         end do
+         eptr(e + 1) = int(position, c_int32_t)
+      end do
+      status = metis_set_default_options(options)
+      status = metis_part_mesh_dual(int(size(connectivity, 2), c_int32_t), int(n_nodes, c_int32_t), eptr, eind, &
+                                    c_null_ptr, c_null_ptr, 2_c_int32_t, int(n_parts, c_int32_t), c_null_ptr, &
+                                    options, objval, epart, npart)
+      if (status /= metis_ok) then
+         call fatal_error(error, 'METIS_PartMeshDual failed with status '//to_string(int(status)))
+         return
+      end if
+      element_part = int(epart(:size(connectivity, 2)))
+      allocate (node_part(n_nodes), source=-1)
+      do e = 1, size(connectivity, 2)
+         do k = 1, size(connectivity, 1)
+            if (connectivity(k, e) <= 0) cycle
+            if (node_part(connectivity(k, e)) < 0) node_part(connectivity(k, e)) = element_part(e)
+         end do
+      end do
+      where (node_part < 0) node_part = 0
+   end subroutine metis_mesh_partition
 
    !> DOF permutation (0-based, size matrix%n) in the METIS/CHOLMOD `perm` convention:
    !> permutation(k+1) = original equation (0-based) eliminated k-th. Node k eliminated

@@ -10,8 +10,9 @@
 !> through the mirror positions (`mirror_positions`) into an array PETSc uses in place
 !> (MatCreateSeqAIJWithArrays), with block size 3 and the six rigid-body modes of the nodes'
 !> positions as its near-null space (MatNullSpaceCreateRigidBody: what GAMG needs for
-!> elasticity, PETSc manual, PCGAMG). One process; the distribution over MPI processes is not
-!> done yet.
+!> elasticity, PETSc manual, PCGAMG). Under `mpirun -n P` (frix_process_group,
+!> docs/parallel.md) the matrix is a distributed AIJ instead, assembled from every process's
+!> share (factorize_distributed), and the solution is copied to every process.
 !>
 !> Built with PETSc only when CMake's FRIX_PETSC is ON (compile definition FRIX_WITH_PETSC);
 !> otherwise the type exists and `factorize` reports that this frix was built without PETSc.
@@ -27,6 +28,7 @@ module frix_petsc_solver
    use frix_strings, only: to_string
    use frix_system_matrix, only: system_matrix_t
    use frix_sparse_matrix, only: sparse_matrix_t
+   use frix_process_group, only: n_processes, node_numbering, agree_on_failure
    use frix_linear_solver, only: linear_solver_t, wall_clock_seconds, begin_factorize, check_solve_sizes, &
                                  csc_matrix, add_elapsed_seconds, singular_matrix_message, solver_singular, &
                                  solver_failed
@@ -53,6 +55,16 @@ module frix_petsc_solver
       PetscScalar, allocatable, private :: row_values(:)  !! A in compressed rows
       integer, allocatable, private :: mirror(:)   !! CSC position of each compressed-row entry
       PetscScalar, allocatable, private :: coords(:)  !! (3 n_nodes) node positions, x y z per node
+      !> a parallel run (frix_process_group): the PETSc row of every equation (0-based, the
+      !> nodes numbered process by process, node_numbering), the rows this process owns,
+      !> first_row..last_row, and its equations in their order (1-based frix equations), the
+      !> solution and its copy on every process
+      logical, private :: distributed = .false.
+      PetscInt, allocatable, private :: petsc_row(:)   !! (0:n - 1)
+      PetscInt, private :: first_row = 0, last_row = -1
+      integer, allocatable, private :: owned_equations(:)
+      type(tVec), private :: b, u, u_all
+      type(tVecScatter), private :: to_all
 #endif
    contains
       procedure :: name
@@ -124,8 +136,6 @@ contains
       type(sparse_matrix_t), pointer :: csc
       integer(i8), pointer, contiguous :: col_ptr(:), row_index(:)
       real(dp), pointer, contiguous :: values(:)
-      type(tPC) :: pc
-      PCFailedReason :: failed
       PetscErrorCode :: ierr
       real(dp) :: start
 
@@ -135,6 +145,10 @@ contains
       if (allocated(error)) return
       call csc%csc_arrays(col_ptr, row_index, values)
       start = wall_clock_seconds()
+      if (n_processes() > 1) then
+         call factorize_distributed(solver, matrix, csc, col_ptr, row_index, values, start, error)
+         return
+      end if
       if (matrix%pattern_id /= solver%analysed_pattern_id) then
          call release(solver)
          solver%row_ptr = int(col_ptr, kind(solver%row_ptr))
@@ -148,13 +162,7 @@ contains
          if (ierr == 0 .and. allocated(solver%coords)) then
             if (size(solver%coords) == matrix%n) call set_rigid_body_modes(solver, ierr)
          end if
-         if (ierr == 0) call KSPCreate(PETSC_COMM_SELF, solver%ksp, ierr)
-         if (ierr == 0) call KSPSetOperators(solver%ksp, solver%a, solver%a, ierr)
-         if (ierr == 0) call KSPSetType(solver%ksp, KSPPREONLY, ierr)
-         if (ierr == 0) call KSPGetPC(solver%ksp, pc, ierr)
-         if (ierr == 0) call PCSetType(pc, PCLU, ierr)
-         if (ierr == 0) call PCFactorSetMatSolverType(pc, MATSOLVERMUMPS, ierr)
-         if (ierr == 0) call KSPSetFromOptions(solver%ksp, ierr)
+         if (ierr == 0) call create_ksp(solver, PETSC_COMM_SELF, ierr)
          if (ierr /= 0) then
             solver%failure = solver_failed
             call fatal_error(error, 'PETSC: setting up the matrix and KSP failed, error code '//to_string(int(ierr)))
@@ -168,18 +176,31 @@ contains
       end if
       call MatAssemblyBegin(solver%a, MAT_FINAL_ASSEMBLY, ierr)
       call MatAssemblyEnd(solver%a, MAT_FINAL_ASSEMBLY, ierr)
+      call set_up_factors(solver, matrix%pattern_id, start, error)
+   end subroutine factorize
+
+   !> KSPSetUp on the assembled matrix (for LU: the numeric factorization); a failed
+   !> factorization or preconditioner on any process is a singular matrix.
+   subroutine set_up_factors(solver, pattern_id, start, error)
+      class(petsc_solver_t), intent(inout) :: solver
+      integer, intent(in) :: pattern_id
+      real(dp), intent(in) :: start   !! wall clock at the start of factorize [s]
+      type(error_t), allocatable, intent(out) :: error
+      type(tPC) :: pc
+      PCFailedReason :: failed
+      PetscErrorCode :: ierr
       call KSPSetUp(solver%ksp, ierr)
       call add_elapsed_seconds(start, solver%last_factorize_seconds, solver%factorize_seconds, solver%n_factorizations)
       call KSPGetPC(solver%ksp, pc, ierr)
       call PCGetFailedReason(pc, failed, ierr)
-      if (failed /= PC_NOERROR .or. ierr /= 0) then
+      if (agree_on_failure(failed /= PC_NOERROR .or. ierr /= 0)) then
          solver%failure = solver_singular
          call singular_matrix_message(error, 'PETSC', 'singular', 0, &
                                       'the preconditioner failed (PCFailedReason '//to_string(int(failed))//')')
          return
       end if
-      solver%factorized_pattern_id = matrix%pattern_id
-   end subroutine factorize
+      solver%factorized_pattern_id = pattern_id
+   end subroutine set_up_factors
 
    subroutine set_node_coordinates(solver, coords)
       class(petsc_solver_t), intent(inout) :: solver
@@ -216,16 +237,225 @@ contains
       if (allocated(error)) return
       start = wall_clock_seconds()
       x = 0.0_dp
-      call VecCreateSeqWithArray(PETSC_COMM_SELF, 1, int(matrix%n, kind(solver%row_ptr)), rhs, b, ierr)
-      call VecCreateSeqWithArray(PETSC_COMM_SELF, 1, int(matrix%n, kind(solver%row_ptr)), x, u, ierr)
-      call KSPSolve(solver%ksp, b, u, ierr)
-      call KSPGetConvergedReason(solver%ksp, reason, ierr)
-      call VecDestroy(b, ierr)
-      call VecDestroy(u, ierr)
+      if (solver%distributed) then
+         call solve_distributed(solver, rhs, x, reason)
+      else
+         call VecCreateSeqWithArray(PETSC_COMM_SELF, 1, int(matrix%n, kind(solver%row_ptr)), rhs, b, ierr)
+         call VecCreateSeqWithArray(PETSC_COMM_SELF, 1, int(matrix%n, kind(solver%row_ptr)), x, u, ierr)
+         call KSPSolve(solver%ksp, b, u, ierr)
+         call KSPGetConvergedReason(solver%ksp, reason, ierr)
+         call VecDestroy(b, ierr)
+         call VecDestroy(u, ierr)
+      end if
       call add_elapsed_seconds(start, solver%last_solve_seconds, solver%solve_seconds, solver%n_solves)
       if (reason < 0) call fatal_error(error, 'PETSC: the KSP did not converge (KSPConvergedReason '// &
                                        to_string(int(reason))//')')
    end subroutine solve
+
+   !> factorize in a parallel run (docs/parallel.md): every process holds the whole pattern and
+   !> its own share of the values (its elements; process 0 also contact, loads and the
+   !> Dirichlet diagonal); the matrix is a distributed AIJ (MPIAIJ) whose rows are those of
+   !> the nodes of the processes' partition, renumbered so that each process owns a
+   !> contiguous block of them (node_numbering), preallocated exactly from the pattern, and
+   !> each process adds its share by MatSetValues(ADD_VALUES): its own rows whole, the entries
+   !> it holds of other processes' rows where they are not zero (PETSc sends those at the
+   !> assembly).
+   subroutine factorize_distributed(solver, matrix, csc, col_ptr, row_index, values, start, error)
+      class(petsc_solver_t), intent(inout) :: solver
+      class(system_matrix_t), intent(in) :: matrix
+      type(sparse_matrix_t), intent(in) :: csc
+      integer(i8), intent(in) :: col_ptr(0:), row_index(:)
+      real(dp), intent(in) :: values(:)
+      real(dp), intent(in) :: start   !! wall clock at the start of factorize [s]
+      type(error_t), allocatable, intent(out) :: error
+      PetscErrorCode :: ierr
+      if (matrix%pattern_id /= solver%analysed_pattern_id) then
+         call release(solver)
+         if (allocated(solver%row_ptr)) deallocate (solver%row_ptr)
+         allocate (solver%row_ptr(0:matrix%n))   ! (indexed by the 0-based row)
+         solver%row_ptr(:) = int(col_ptr, kind(solver%row_ptr))
+         solver%columns = int(row_index, kind(solver%columns))
+         call csc%mirror_positions(solver%mirror)
+         call create_distributed(solver, matrix%n, matrix%n_nodes, ierr)
+         if (ierr /= 0) then
+            solver%failure = solver_failed
+            call fatal_error(error, 'PETSC: setting up the distributed matrix and KSP failed, error code '// &
+                             to_string(int(ierr)))
+            return
+         end if
+         solver%created = .true.
+         solver%n_analyses = solver%n_analyses + 1
+         solver%analysed_pattern_id = matrix%pattern_id
+      end if
+      solver%row_values = values(solver%mirror)
+      call add_share(solver, ierr)
+      if (ierr /= 0) then
+         solver%failure = solver_failed
+         call fatal_error(error, 'PETSC: adding the values to the distributed matrix failed, error code '// &
+                          to_string(int(ierr)))
+         return
+      end if
+      call set_up_factors(solver, matrix%pattern_id, start, error)
+   end subroutine factorize_distributed
+
+   !> The MPIAIJ matrix preallocated from the pattern (solver%row_ptr, columns; the columns
+   !> turned into PETSc's numbering), its vectors, the scatter of the solution to every
+   !> process, and the KSP with frix's defaults.
+   subroutine create_distributed(solver, n, n_nodes, ierr)
+      class(petsc_solver_t), intent(inout) :: solver
+      integer, intent(in) :: n, n_nodes
+      PetscErrorCode, intent(out) :: ierr
+      PetscInt, allocatable :: diagonal_count(:), off_count(:)
+      PetscInt :: row, p, m, local
+      integer, allocatable :: position(:)
+      integer :: first_node, last_node, a, i, e
+      call node_numbering(n_nodes, position, first_node, last_node)
+      if (allocated(solver%petsc_row)) deallocate (solver%petsc_row)
+      allocate (solver%petsc_row(0:n - 1))
+      do a = 1, n_nodes
+         do i = 0, 2
+            solver%petsc_row(3*(a - 1) + i) = 3*position(a) + i
+         end do
+      end do
+      solver%first_row = 3*first_node
+      solver%last_row = 3*last_node + 2
+      m = solver%last_row - solver%first_row + 1
+      if (allocated(solver%owned_equations)) deallocate (solver%owned_equations)
+      allocate (solver%owned_equations(m))
+      do e = 0, n - 1
+         if (owned_row(solver, solver%petsc_row(e))) &
+            solver%owned_equations(solver%petsc_row(e) - solver%first_row + 1) = e + 1
+      end do
+      solver%columns = solver%petsc_row(solver%columns)
+      allocate (diagonal_count(m), off_count(m), source=int(0, kind(m)))
+      do row = 0, n - 1
+         if (.not. owned_row(solver, solver%petsc_row(row))) cycle
+         local = solver%petsc_row(row) - solver%first_row + 1
+         do p = solver%row_ptr(row) + 1, solver%row_ptr(row + 1)
+            if (owned_row(solver, solver%columns(p))) then
+               diagonal_count(local) = diagonal_count(local) + 1
+            else
+               off_count(local) = off_count(local) + 1
+            end if
+         end do
+      end do
+      solver%distributed = .true.
+      call MatCreate(PETSC_COMM_WORLD, solver%a, ierr)
+      if (ierr == 0) call MatSetSizes(solver%a, m, m, int(n, kind(m)), int(n, kind(m)), ierr)
+      if (ierr == 0) call MatSetBlockSize(solver%a, 3, ierr)
+      if (ierr == 0) call MatSetType(solver%a, MATMPIAIJ, ierr)
+      if (ierr == 0) call MatMPIAIJSetPreallocation(solver%a, int(0, kind(m)), diagonal_count, int(0, kind(m)), &
+                                                    off_count, ierr)
+      if (ierr == 0) call MatSetOption(solver%a, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE, ierr)
+      if (ierr == 0 .and. allocated(solver%coords)) then
+         if (size(solver%coords) == n) call set_distributed_rigid_body_modes(solver, m, n, ierr)
+      end if
+      if (ierr == 0) call MatCreateVecs(solver%a, solver%u, solver%b, ierr)
+      if (ierr == 0) call VecScatterCreateToAll(solver%u, solver%to_all, solver%u_all, ierr)
+      if (ierr == 0) call create_ksp(solver, PETSC_COMM_WORLD, ierr)
+   end subroutine create_distributed
+
+   !> Whether this process owns PETSc row `row` (0-based).
+   pure logical function owned_row(solver, row)
+      class(petsc_solver_t), intent(in) :: solver
+      PetscInt, intent(in) :: row
+      owned_row = row >= solver%first_row .and. row <= solver%last_row
+   end function owned_row
+
+   !> The KSP on solver%a with frix's defaults (MUMPS LU) overridden by the PETSc options.
+   subroutine create_ksp(solver, communicator, ierr)
+      class(petsc_solver_t), intent(inout) :: solver
+      MPI_Comm, intent(in) :: communicator
+      PetscErrorCode, intent(out) :: ierr
+      type(tPC) :: pc
+      call KSPCreate(communicator, solver%ksp, ierr)
+      if (ierr == 0) call KSPSetOperators(solver%ksp, solver%a, solver%a, ierr)
+      if (ierr == 0) call KSPSetType(solver%ksp, KSPPREONLY, ierr)
+      if (ierr == 0) call KSPGetPC(solver%ksp, pc, ierr)
+      if (ierr == 0) call PCSetType(pc, PCLU, ierr)
+      if (ierr == 0) call PCFactorSetMatSolverType(pc, MATSOLVERMUMPS, ierr)
+      if (ierr == 0) call KSPSetFromOptions(solver%ksp, ierr)
+   end subroutine create_ksp
+
+   !> This process's share of the values (solver%row_values, compressed rows of frix's
+   !> equations; columns in PETSc's numbering) added to the zeroed distributed matrix, which
+   !> is then assembled.
+   subroutine add_share(solver, ierr)
+      class(petsc_solver_t), intent(inout) :: solver
+      PetscErrorCode, intent(out) :: ierr
+      PetscInt :: r, row(1), p, first, last, k, n
+      PetscInt, allocatable :: held_columns(:)
+      PetscScalar, allocatable :: held_values(:)
+      call MatZeroEntries(solver%a, ierr)
+      n = ubound(solver%row_ptr, 1)
+      allocate (held_columns(maxval(solver%row_ptr(1:n) - solver%row_ptr(0:n - 1))))
+      allocate (held_values(size(held_columns)))
+      do r = 0, n - 1
+         row(1) = solver%petsc_row(r)
+         first = solver%row_ptr(r) + 1
+         last = solver%row_ptr(r + 1)
+         if (owned_row(solver, row(1))) then
+            call MatSetValues(solver%a, 1, row, last - first + 1, solver%columns(first:last), &
+                              solver%row_values(first:last), ADD_VALUES, ierr)
+         else
+            k = 0
+            do p = first, last
+               if (solver%row_values(p) == 0.0_dp) cycle
+               k = k + 1
+               held_columns(k) = solver%columns(p)
+               held_values(k) = solver%row_values(p)
+            end do
+            if (k > 0) call MatSetValues(solver%a, 1, row, k, held_columns(:k), held_values(:k), ADD_VALUES, ierr)
+         end if
+         if (ierr /= 0) return
+      end do
+      call MatAssemblyBegin(solver%a, MAT_FINAL_ASSEMBLY, ierr)
+      call MatAssemblyEnd(solver%a, MAT_FINAL_ASSEMBLY, ierr)
+   end subroutine add_share
+
+   !> set_rigid_body_modes on the distributed rows: the positions of this process's nodes, in
+   !> PETSc's numbering.
+   subroutine set_distributed_rigid_body_modes(solver, m, n, ierr)
+      class(petsc_solver_t), intent(inout) :: solver
+      PetscInt, intent(in) :: m
+      integer, intent(in) :: n
+      PetscErrorCode, intent(out) :: ierr
+      type(tVec) :: positions
+      type(tMatNullSpace) :: modes
+      PetscScalar, pointer :: local(:)
+      call VecCreateMPI(PETSC_COMM_WORLD, m, int(n, kind(m)), positions, ierr)
+      if (ierr == 0) call VecSetBlockSize(positions, 3, ierr)
+      if (ierr == 0) call VecGetArrayF90(positions, local, ierr)
+      if (ierr /= 0) return
+      local = solver%coords(solver%owned_equations)
+      call VecRestoreArrayF90(positions, local, ierr)
+      if (ierr == 0) call MatNullSpaceCreateRigidBody(positions, modes, ierr)
+      if (ierr == 0) call MatSetNearNullSpace(solver%a, modes, ierr)
+      if (ierr == 0) call MatNullSpaceDestroy(modes, ierr)
+      if (ierr == 0) call VecDestroy(positions, ierr)
+   end subroutine set_distributed_rigid_body_modes
+
+   !> KSPSolve of a parallel run: this process's rows of rhs (whole on every process) into the
+   !> distributed right-hand side, the solution copied to every process (VecScatterCreateToAll,
+   !> in PETSc's numbering) and put back in frix's.
+   subroutine solve_distributed(solver, rhs, x, reason)
+      class(petsc_solver_t), intent(inout) :: solver
+      real(dp), intent(in) :: rhs(:)
+      real(dp), intent(out) :: x(:)
+      KSPConvergedReason, intent(out) :: reason
+      PetscScalar, pointer :: local(:)
+      PetscErrorCode :: ierr
+      call VecGetArrayF90(solver%b, local, ierr)
+      local = rhs(solver%owned_equations)
+      call VecRestoreArrayF90(solver%b, local, ierr)
+      call KSPSolve(solver%ksp, solver%b, solver%u, ierr)
+      call KSPGetConvergedReason(solver%ksp, reason, ierr)
+      call VecScatterBegin(solver%to_all, solver%u, solver%u_all, INSERT_VALUES, SCATTER_FORWARD, ierr)
+      call VecScatterEnd(solver%to_all, solver%u, solver%u_all, INSERT_VALUES, SCATTER_FORWARD, ierr)
+      call VecGetArrayReadF90(solver%u_all, local, ierr)
+      x = local(solver%petsc_row + 1)
+      call VecRestoreArrayReadF90(solver%u_all, local, ierr)
+   end subroutine solve_distributed
 
    subroutine release(solver)
       class(petsc_solver_t), intent(inout) :: solver
@@ -234,6 +464,13 @@ contains
          call KSPDestroy(solver%ksp, ierr)
          call MatDestroy(solver%a, ierr)
       end if
+      if (solver%created .and. solver%distributed) then
+         call VecScatterDestroy(solver%to_all, ierr)
+         call VecDestroy(solver%b, ierr)
+         call VecDestroy(solver%u, ierr)
+         call VecDestroy(solver%u_all, ierr)
+      end if
+      solver%distributed = .false.
       solver%created = .false.
       solver%analysed_pattern_id = 0
       solver%factorized_pattern_id = 0

@@ -340,6 +340,7 @@ contains
       type(error_t), allocatable, intent(out), optional :: error
       integer :: la, lb, na, nb, k, degree, base, p, column, row
 
+      if (matrix%ignore_additions) return
       do la = 1, size(nodes)
          na = nodes(la)
          degree = matrix%node_ptr(na + 1) - matrix%node_ptr(na)

@@ -21,6 +21,10 @@ module frix_system_matrix
       integer :: n_nodes = 0                    !! number of nodes of the node graph
       integer :: pattern_id = 0                 !! changes at every (re)build of the pattern; 0: none
       integer(i8) :: dropped_entries = 0        !! entries add_element could not place (no error argument given)
+      !> add_element adds nothing: on every process but one of a parallel run, while contact
+      !> and loads, evaluated on every process, add what process 0 alone contributes
+      !> (frix_process_group, docs/parallel.md)
+      logical :: ignore_additions = .false.
    contains
       procedure(create_pattern_interface), deferred :: create_node_block_pattern
       procedure(zero_interface), deferred :: zero
