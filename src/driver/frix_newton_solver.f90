@@ -487,18 +487,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(path_constraint_t), intent(in), optional :: path
       type(error_t), allocatable :: inner_error
-      real(dp) :: diagonal_scale
       energy = 0.0_dp
       correction_norm = 0.0_dp
       if (reusing) then
          call solve_factorized(context, context%residual, context%correction, inner_error)
       else
-         ! the value put on the diagonal of constrained equations: the mean |K_ii|
-         diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
-         if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
-         ! (a parallel run: the processes' matrices are summed, process 0 puts the diagonal)
-         if (.not. is_root_process()) diagonal_scale = 0.0_dp
-         call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
+         call apply_dirichlet_rows(context)
          call factorize_and_solve(model, context, inner_error)
          if (allocated(inner_error) .and. state%has_contact) then
             if (context%solver%failed_equation > 0) then
@@ -548,6 +542,18 @@ contains
       state%time = time
    end subroutine apply_correction
 
+   !> The fixed and dependent equations' rows and columns of the tangent cleared, with the mean
+   !> |K_ii| of the tangent just assembled (context%diagonal) on their diagonal; in a parallel
+   !> run the processes' matrices are summed and process 0 alone puts the diagonal.
+   subroutine apply_dirichlet_rows(context)
+      type(newton_context_t), intent(inout) :: context
+      real(dp) :: diagonal_scale
+      diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
+      if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
+      if (.not. is_root_process()) diagonal_scale = 0.0_dp
+      call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
+   end subroutine apply_dirichlet_rows
+
    !> A singular tangent with contact (typically a body that has left all its master surfaces
    !> at this iterate and floats): the correction is solved again with every open slave node
    !> that has a master face taken as in contact, its internal force linear in its gap
@@ -564,7 +570,7 @@ contains
       real(dp), intent(in) :: time
       type(error_t), allocatable, intent(out) :: error
       real(dp), allocatable :: residual(:), fint(:), reactions(:)
-      real(dp) :: residual_norm, reference, diagonal_scale
+      real(dp) :: residual_norm, reference
       character(len=:), allocatable :: failure
       context%n_predicted_contact = context%n_predicted_contact + 1
       allocate (residual, source=context%residual)
@@ -575,9 +581,7 @@ contains
       if (.not. allocated(error) .and. allocated(failure)) call fatal_error(error, failure)
       if (allocated(error)) return
       call context%matrix%get_diagonal(context%diagonal)
-      diagonal_scale = sum(abs(context%diagonal))/max(1, size(context%diagonal))
-      if (diagonal_scale == 0.0_dp) diagonal_scale = 1.0_dp
-      call context%matrix%apply_dirichlet(context%fixed .or. context%dependent, diagonal_scale)
+      call apply_dirichlet_rows(context)
       call factorize_and_solve(model, context, error)
       context%residual = residual
       context%fint = fint
