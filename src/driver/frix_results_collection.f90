@@ -184,7 +184,7 @@ contains
       do m = 1, size(model%materials)
          call model%materials(m)%law%history_names(names)
          do k = 1, size(names)
-            if (.not. any(all_names == names(k))) all_names = [all_names, names(k)]
+            if (.not. any(all_names == names(k))) call append_name(all_names, names(k))
          end do
       end do
       allocate (entry(size(all_names), size(model%materials)), source=0)
@@ -205,6 +205,18 @@ contains
          end do
       end do
    end subroutine collect_history_fields
+
+   !> `name` appended to `list` (an explicit copy: gfortran 12 at -O0 with -fcheck=all misreads
+   !> the length of a growing character array constructor, [list, name], and stops the run).
+   pure subroutine append_name(list, name)
+      character(len=history_name_length), allocatable, intent(inout) :: list(:)
+      character(len=history_name_length), intent(in) :: name
+      character(len=history_name_length), allocatable :: longer(:)
+      allocate (longer(size(list) + 1))
+      longer(:size(list)) = list
+      longer(size(list) + 1) = name
+      call move_alloc(longer, list)
+   end subroutine append_name
 
    !> The contact tables of every pass, the slip histories and the per-node contact fields.
    !> Whether contact pair `pair` has an augmented normal law (its multipliers are results).
