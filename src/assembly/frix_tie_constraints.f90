@@ -16,8 +16,7 @@ module frix_tie_constraints
    use frix_constraint_equations, only: constraint_equations_t
    use frix_face_projection, only: face_position, face_normal
    use frix_contact_kernel, only: contact_point_result_t, contact_stick
-   use frix_contact_pass, only: contact_pass_t
-   use frix_contact_search, only: current_nodes
+   use frix_contact_pass, only: contact_pass_t, pass_positions
    use frix_tie_pass, only: tie_masters, tie_weights
    implicit none
    private
@@ -102,7 +101,7 @@ contains
                pass%result(i) = contact_point_result_t()
                if (pass%face(i) == 0) cycle
                s = pass%slave_nodes(i)
-               x_face = current_nodes(coords, u, pass%faces(:, pass%face(i)))
+               x_face = pass_positions(pass, coords, u, pass%faces(:, pass%face(i)))
                x_slave = coords(:, s) + u(3*s - 2:3*s)
                normal = face_normal(x_face, pass%anchor_xi(:, i))
                force = merge(-residual(3*s - 2:3*s), 0.0_dp, dependent(3*s - 2:3*s))

@@ -31,7 +31,7 @@ module frix_contact_search
    implicit none
    private
 
-   public :: assign_faces, initial_anchors, plane_anchors, current_nodes, face_nodal_normals
+   public :: assign_faces, initial_anchors, plane_anchors, face_nodal_normals
 
    real(dp), parameter :: tie_tolerance = 1.0e-10_dp  !! relative distance difference counted as a tie
    !> Facet search (nearest_face): the node's current face is kept against a nearer face whose
@@ -384,15 +384,4 @@ contains
                             pass_positions(pass, coords, u, ring_nodes_of(pass%patches, f)), &
                             patch_faces_of(pass%patches, f))
    end function face_nodal_normals
-
-   !> Current coordinates X + u of nodes.
-   pure function current_nodes(coords, u, nodes) result(x)
-      real(dp), intent(in) :: coords(:, :), u(:)
-      integer, intent(in) :: nodes(:)
-      real(dp) :: x(3, size(nodes))
-      integer :: a
-      do a = 1, size(nodes)
-         x(:, a) = coords(:, nodes(a)) + u(3*nodes(a) - 2:3*nodes(a))
-      end do
-   end function current_nodes
 end module frix_contact_search
